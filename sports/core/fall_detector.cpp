@@ -6,7 +6,8 @@ namespace olympics::core {
 
 FallDetector::FallDetector(const ModelSpec& spec, std::vector<std::string> extra_contact_bodies) {
   for (const auto& b : spec.bodies) {
-    bool foot = b.name.find("Ankle") != std::string::npos || b.name.find("Toe") != std::string::npos;
+    bool foot =
+        b.name.find("Ankle") != std::string::npos || b.name.find("Toe") != std::string::npos;
     bool extra = std::find(extra_contact_bodies.begin(), extra_contact_bodies.end(), b.name) !=
                  extra_contact_bodies.end();
     may_touch_.push_back(foot || extra);

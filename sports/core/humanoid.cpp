@@ -29,9 +29,15 @@ std::vector<Transform> rest_transforms(const ModelSpec& spec) {
 dMass geom_mass(const GeomSpec& g) {
   dMass m;
   switch (g.shape) {
-    case GeomShape::Sphere: dMassSetSphere(&m, g.density, g.radius); break;
-    case GeomShape::Capsule: dMassSetCapsule(&m, g.density, 3, g.radius, 2 * g.half_length); break;
-    case GeomShape::Cylinder: dMassSetCylinder(&m, g.density, 3, g.radius, 2 * g.half_length); break;
+    case GeomShape::Sphere:
+      dMassSetSphere(&m, g.density, g.radius);
+      break;
+    case GeomShape::Capsule:
+      dMassSetCapsule(&m, g.density, 3, g.radius, 2 * g.half_length);
+      break;
+    case GeomShape::Cylinder:
+      dMassSetCylinder(&m, g.density, 3, g.radius, 2 * g.half_length);
+      break;
     case GeomShape::Box:
       dMassSetBox(&m, g.density, 2 * g.half_extents.x(), 2 * g.half_extents.y(),
                   2 * g.half_extents.z());
@@ -48,9 +54,12 @@ dMass geom_mass(const GeomSpec& g) {
 
 dGeomID create_geom(dSpaceID space, const GeomSpec& g) {
   switch (g.shape) {
-    case GeomShape::Sphere: return dCreateSphere(space, g.radius);
-    case GeomShape::Capsule: return dCreateCapsule(space, g.radius, 2 * g.half_length);
-    case GeomShape::Cylinder: return dCreateCylinder(space, g.radius, 2 * g.half_length);
+    case GeomShape::Sphere:
+      return dCreateSphere(space, g.radius);
+    case GeomShape::Capsule:
+      return dCreateCapsule(space, g.radius, 2 * g.half_length);
+    case GeomShape::Cylinder:
+      return dCreateCylinder(space, g.radius, 2 * g.half_length);
     case GeomShape::Box:
       return dCreateBox(space, 2 * g.half_extents.x(), 2 * g.half_extents.y(),
                         2 * g.half_extents.z());
@@ -64,8 +73,12 @@ std::pair<double, double> geom_z_centre_and_extent(const GeomSpec& g, const Tran
   Eigen::Vector3d axis = t.q * Eigen::Vector3d::UnitZ();
   double extent = 0;
   switch (g.shape) {
-    case GeomShape::Sphere: extent = g.radius; break;
-    case GeomShape::Capsule: extent = std::abs(axis.z()) * g.half_length + g.radius; break;
+    case GeomShape::Sphere:
+      extent = g.radius;
+      break;
+    case GeomShape::Capsule:
+      extent = std::abs(axis.z()) * g.half_length + g.radius;
+      break;
     case GeomShape::Cylinder:
       extent = std::abs(axis.z()) * g.half_length +
                g.radius * std::sqrt(std::max(0.0, 1 - axis.z() * axis.z()));
@@ -88,9 +101,11 @@ Humanoid::Humanoid(PhysicsWorld& world, const ModelSpec& spec, const RootPlaceme
   self_collision_allowed_.assign(n * n, 1);
   for (int i = 0; i < n; ++i) {
     self_collision_allowed_[i * n + i] = 0;
-    if (int p = spec_.bodies[i].parent; p >= 0) self_collision_allowed_[i * n + p] = self_collision_allowed_[p * n + i] = 0;
+    if (int p = spec_.bodies[i].parent; p >= 0)
+      self_collision_allowed_[i * n + p] = self_collision_allowed_[p * n + i] = 0;
   }
-  for (auto [a, b] : spec_.contact_excludes) self_collision_allowed_[a * n + b] = self_collision_allowed_[b * n + a] = 0;
+  for (auto [a, b] : spec_.contact_excludes)
+    self_collision_allowed_[a * n + b] = self_collision_allowed_[b * n + a] = 0;
   int entity = world_.add_entity([this](int a, int b) { return may_self_collide(a, b); });
 
   ground_touch_.assign(n, 0);
@@ -173,7 +188,8 @@ bool Humanoid::may_self_collide(int a, int b) const {
 void Humanoid::place_bodies(const RootPlacement& placement) {
   Eigen::Vector3d root_pos = placement.position;
   if (root_pos.z() <= 0) root_pos.z() = standing_root_height_;
-  Transform root{root_pos, Eigen::Quaterniond(Eigen::AngleAxisd(placement.yaw, Eigen::Vector3d::UnitZ()))};
+  Transform root{root_pos,
+                 Eigen::Quaterniond(Eigen::AngleAxisd(placement.yaw, Eigen::Vector3d::UnitZ()))};
   auto rest = rest_transforms(spec_);
   for (int i = 0; i < body_count(); ++i) {
     Transform t = root * rest[i];

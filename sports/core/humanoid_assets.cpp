@@ -16,7 +16,8 @@ std::string asset_directory() {
 }
 
 std::string humanoid_asset_path(HumanoidKind kind) {
-  return asset_directory() + (kind == HumanoidKind::Smpl ? "/smpl_humanoid.xml" : "/smplx_humanoid.xml");
+  return asset_directory() +
+         (kind == HumanoidKind::Smpl ? "/smpl_humanoid.xml" : "/smplx_humanoid.xml");
 }
 
 ModelSpec load_humanoid(HumanoidKind kind) { return load_mjcf_file(humanoid_asset_path(kind)); }

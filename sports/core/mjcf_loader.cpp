@@ -75,7 +75,8 @@ void Reader::read_defaults(const XMLElement* e, const std::string& class_name,
       read_defaults(child, name, class_name);
       continue;
     }
-    for (auto* a = child->FirstAttribute(); a; a = a->Next()) cls.attrs[tag][a->Name()] = a->Value();
+    for (auto* a = child->FirstAttribute(); a; a = a->Next())
+      cls.attrs[tag][a->Name()] = a->Value();
   }
 }
 
@@ -114,8 +115,8 @@ std::vector<double> Reader::numbers(const XMLElement* e, const std::string& name
   }
   if (out.size() < min_count || out.size() > max_count) {
     std::ostringstream msg;
-    msg << "attribute " << name << "=\"" << *text << "\" has " << out.size() << " numbers, expected "
-        << min_count;
+    msg << "attribute " << name << "=\"" << *text << "\" has " << out.size()
+        << " numbers, expected " << min_count;
     if (max_count != min_count) msg << " to " << max_count;
     fail(e, msg.str());
   }
@@ -184,11 +185,16 @@ GeomSpec Reader::read_geom(const XMLElement* e, const std::string& cls) const {
   GeomSpec g;
   if (const char* name = e->Attribute("name")) g.name = name;
   std::string type = attr(e, "type", cls).value_or("sphere");
-  if (type == "sphere") g.shape = GeomShape::Sphere;
-  else if (type == "capsule") g.shape = GeomShape::Capsule;
-  else if (type == "cylinder") g.shape = GeomShape::Cylinder;
-  else if (type == "box") g.shape = GeomShape::Box;
-  else fail(e, "geom type \"" + type + "\" is not supported (sphere, capsule, cylinder, box)");
+  if (type == "sphere")
+    g.shape = GeomShape::Sphere;
+  else if (type == "capsule")
+    g.shape = GeomShape::Capsule;
+  else if (type == "cylinder")
+    g.shape = GeomShape::Cylinder;
+  else if (type == "box")
+    g.shape = GeomShape::Box;
+  else
+    fail(e, "geom type \"" + type + "\" is not supported (sphere, capsule, cylinder, box)");
 
   auto size = numbers(e, "size", cls, 1, 3);
   auto fromto = numbers(e, "fromto", cls, 6, 6);
@@ -213,7 +219,8 @@ GeomSpec Reader::read_geom(const XMLElement* e, const std::string& cls) const {
     } else {
       g.radius = size[0];
       if (g.shape != GeomShape::Sphere) {
-        if (size.size() < 2) fail(e, "a capsule or cylinder without fromto needs size=\"r half_length\"");
+        if (size.size() < 2)
+          fail(e, "a capsule or cylinder without fromto needs size=\"r half_length\"");
         g.half_length = size[1];
       }
     }
@@ -250,9 +257,12 @@ void Reader::read_body(const XMLElement* e, int parent, const std::string& inher
       body.free_root = true;
     } else if (tag == "joint") {
       std::string type = attr(c, "type", ccls).value_or("hinge");
-      if (type == "free") body.free_root = true;
-      else if (type == "hinge") body.hinges.push_back(read_hinge(c, ccls));
-      else fail(c, "joint type \"" + type + "\" is not supported; write three hinges (x, y, z)");
+      if (type == "free")
+        body.free_root = true;
+      else if (type == "hinge")
+        body.hinges.push_back(read_hinge(c, ccls));
+      else
+        fail(c, "joint type \"" + type + "\" is not supported; write three hinges (x, y, z)");
     } else if (tag == "geom") {
       body.geoms.push_back(read_geom(c, ccls));
       if (body.geoms.back().name.empty()) body.geoms.back().name = body.name;
@@ -311,7 +321,8 @@ void Reader::convert_y_up_to_z_up() {
 }
 
 ModelSpec Reader::read(const XMLElement* root) {
-  if (!root || std::string(root->Name()) != "mujoco") fail(root, "the top element must be <mujoco>");
+  if (!root || std::string(root->Name()) != "mujoco")
+    fail(root, "the top element must be <mujoco>");
   model_.source = source_;
   if (auto* compiler = root->FirstChildElement("compiler")) {
     if (const char* a = compiler->Attribute("angle")) {

@@ -20,11 +20,11 @@ struct GeomSpec {
   // Centre and orientation in the owning body's frame. Capsules and cylinders lie along local z.
   Eigen::Vector3d pos = Eigen::Vector3d::Zero();
   Eigen::Quaterniond quat = Eigen::Quaterniond::Identity();
-  double radius = 0;                                        // sphere, capsule, cylinder
-  double half_length = 0;                                   // capsule / cylinder: of the cylinder part
-  Eigen::Vector3d half_extents = Eigen::Vector3d::Zero();   // box
+  double radius = 0;       // sphere, capsule, cylinder
+  double half_length = 0;  // capsule / cylinder: of the cylinder part
+  Eigen::Vector3d half_extents = Eigen::Vector3d::Zero();  // box
   double density = 1000;
-  std::optional<double> mass;                               // overrides density when given
+  std::optional<double> mass;  // overrides density when given
   double friction = 1.0;
 };
 
@@ -38,7 +38,7 @@ struct HingeSpec {
 
 struct BodySpec {
   std::string name;
-  int parent = -1;  // index into ModelSpec::bodies; -1 for the root
+  int parent = -1;                                // index into ModelSpec::bodies; -1 for the root
   Eigen::Vector3d pos = Eigen::Vector3d::Zero();  // in the parent frame
   Eigen::Quaterniond quat = Eigen::Quaterniond::Identity();
   bool free_root = false;
@@ -54,9 +54,9 @@ struct ModelSpec {
   std::vector<std::pair<int, int>> contact_excludes;  // body index pairs
   double timestep = 0.002;                            // <option timestep>, MuJoCo's default
 
-  int body_index(const std::string& name) const;      // -1 when absent
-  int dof_count() const;                              // number of hinges
-  std::vector<std::string> hinge_names() const;       // action order
+  int body_index(const std::string& name) const;  // -1 when absent
+  int dof_count() const;                          // number of hinges
+  std::vector<std::string> hinge_names() const;   // action order
 };
 
 }  // namespace olympics::core

@@ -17,7 +17,7 @@ Eigen::Vector3d rotation_vector(const Eigen::Quaterniond& q_in) {
   Eigen::Quaterniond q = q_in.normalized();
   if (q.w() < 0) q.coeffs() = -q.coeffs();  // shortest way round
   double s = q.vec().norm();
-  if (s < 1e-12) return 2.0 * q.vec();       // small-angle limit
+  if (s < 1e-12) return 2.0 * q.vec();  // small-angle limit
   double angle = 2.0 * std::atan2(s, q.w());
   return q.vec() * (angle / s);
 }

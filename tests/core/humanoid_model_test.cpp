@@ -66,8 +66,7 @@ TEST(HumanoidModel, PublicYUpSmplFileIsTurnedZUp) {
   // The head ends up above the pelvis along +z.
   PhysicsWorld world;
   Humanoid h(world, spec);
-  EXPECT_GT(h.body_state(spec.body_index("Head")).position.z(),
-            h.body_state(0).position.z() + 0.4);
+  EXPECT_GT(h.body_state(spec.body_index("Head")).position.z(), h.body_state(0).position.z() + 0.4);
 }
 
 TEST(HumanoidModel, PublicSmplxFileLoadsWithGainsFromUserField) {

@@ -46,7 +46,8 @@ struct HeldHumanoid {
   }
   double max_angular_speed() const {
     double m = 0;
-    for (const auto& s : scene.humanoid(0).body_states()) m = std::max(m, s.angular_velocity.norm());
+    for (const auto& s : scene.humanoid(0).body_states())
+      m = std::max(m, s.angular_velocity.norm());
     return m;
   }
   HumanoidScene scene;

@@ -14,7 +14,9 @@
 namespace olympics::core::testing {
 
 // ../shared/fixtures holds public MJCF files; tests that need them skip loudly where it is absent.
-inline std::string fixture(const std::string& name) { return std::string(OLYMPICS_FIXTURE_DIR) + "/" + name; }
+inline std::string fixture(const std::string& name) {
+  return std::string(OLYMPICS_FIXTURE_DIR) + "/" + name;
+}
 inline bool have_fixtures() { return std::filesystem::exists(OLYMPICS_FIXTURE_DIR); }
 
 inline const ModelSpec& smpl() {
