@@ -1,0 +1,90 @@
+// olympics-agent: joins a match and plays it with a named policy, then prints the result.
+//
+//   olympics-agent --request-id demo --sport sandbox --mode 1v1 --slots 0 --policy zero
+//   olympics-agent --match SERVER-7 --slots 1 --policy random
+//
+// Agents given the same --request-id share one match (the server dedupes the request), so two
+// processes can meet without passing a match id around.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "match_client.h"
+#include "policies.h"
+
+int main(int argc, char** argv) {
+  using namespace olympics::client;
+  CLI::App app{"olympics-agent: play a match with a named policy"};
+  ClientOptions options;
+  MatchRequest request;
+  std::string match_id, policy_name = "zero";
+  std::vector<int> slots{0};
+  std::uint64_t policy_seed = 1;
+  bool json = false;
+  double timeout_s = 60;
+  app.add_option("--match", match_id, "join this match id (else request one)");
+  app.add_option("--request-id", request.request_id,
+                 "request id; agents with the same id share a match");
+  app.add_option("--sport", request.sport, "sport to request");
+  app.add_option("--mode", request.mode, "mode to request (1v1, 2v2, ...)");
+  app.add_option("--seed", request.seed, "match seed");
+  app.add_option("--time-limit", request.time_limit_s, "seconds (0: the sport's default)");
+  app.add_flag("--realtime", request.realtime, "30 Hz clock instead of lockstep");
+  app.add_option("--server", request.server_id, "ask this server only");
+  app.add_option("--slots", slots, "slots to play")->delimiter(',');
+  app.add_option("--policy", policy_name, "zero, random");
+  app.add_option("--policy-seed", policy_seed, "seed of a random policy");
+  app.add_option("--name", options.agent_name, "agent name recorded with the result");
+  app.add_option("--policy-id", options.policy_id, "policy id recorded with the result");
+  app.add_option("--policy-version", options.policy_version,
+                 "policy version recorded with the result");
+  app.add_option("--lcm-url", options.lcm_url, "LCM provider URL");
+  app.add_option("--timeout", timeout_s, "give up when the server is silent this long (s)");
+  app.add_option("--drop-rate", options.drop_rate, "TEST ONLY: drop this share of sent datagrams");
+  app.add_option("--drop-seed", options.drop_seed, "TEST ONLY: seed of the drops");
+  app.add_flag("--json", json, "print the result as JSON");
+  CLI11_PARSE(app, argc, argv);
+  if (options.policy_id.empty()) options.policy_id = policy_name;
+
+  try {
+    auto policy = make_policy(policy_name, policy_seed);
+    MatchClient client(options);
+    if (match_id.empty()) match_id = client.request_match(request, timeout_s).match_id;
+    const auto match = client.join(match_id, slots, timeout_s);
+    std::fprintf(stderr, "%s joined %s (%s %s) slots", options.agent_name.c_str(),
+                 match.match_id.c_str(), match.sport.c_str(), match.mode.c_str());
+    for (int s : slots) std::fprintf(stderr, " %d", s);
+    std::fprintf(stderr, " with policy %s\n", policy_name.c_str());
+
+    std::vector<std::vector<float>> actions(slots.size(), std::vector<float>(match.action_size));
+    while (auto obs = client.next(timeout_s)) {
+      if (obs->all_done()) break;
+      for (size_t i = 0; i < obs->slots.size(); ++i) policy->act(obs->obs[i], actions[i]);
+      client.act(obs->tick, actions);
+    }
+    const auto& r = client.wait_result(timeout_s);
+    if (json) {
+      nlohmann::json out = {
+          {"match_id", r.match_id}, {"sport", r.sport},        {"mode", r.mode},
+          {"ticks", r.ticks},       {"reason", r.reason},      {"winner_team", r.winner_team},
+          {"scores", r.scores},     {"agents", r.agent_names}, {"slot_team", r.slot_team}};
+      std::printf("%s\n", out.dump().c_str());
+    } else {
+      std::printf("match %s (%s %s) over after %d ticks (%.1f s simulated): %s\n",
+                  r.match_id.c_str(), r.sport.c_str(), r.mode.c_str(), r.ticks, r.ticks / 30.0,
+                  r.reason.c_str());
+      for (int t = 0; t < r.num_teams; ++t) {
+        std::string names;
+        for (int s = 0; s < r.num_slots; ++s)
+          if (r.slot_team[s] == t) names += (names.empty() ? "" : ", ") + r.agent_names[s];
+        std::printf("  team %d (%s): %.2f%s\n", t, names.c_str(), r.scores[t],
+                    r.winner_team == t ? "  WINNER" : "");
+      }
+      if (r.winner_team < 0) std::printf("  no winner\n");
+    }
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "olympics-agent: %s\n", e.what());
+    return 2;
+  }
+}

@@ -1,0 +1,24 @@
+// Policies olympics-agent can play: zero (hold the default pose), random, and (as sports land)
+// a scripted baseline per sport.
+#pragma once
+
+#include <memory>
+#include <random>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace olympics::client {
+
+class Policy {
+ public:
+  virtual ~Policy() = default;
+  // One action for one slot from that slot's observation.
+  virtual void act(std::span<const float> observation, std::span<float> action) = 0;
+};
+
+// Throws std::invalid_argument listing the known policies when `name` is unknown.
+std::unique_ptr<Policy> make_policy(const std::string& name, std::uint64_t seed);
+std::vector<std::string> policy_names();
+
+}  // namespace olympics::client

@@ -1,0 +1,51 @@
+#include "transport.h"
+
+#include <stdexcept>
+
+#include "channels.h"
+
+namespace olympics::protocol {
+
+struct Transport::Subscription {
+  RawHandler handler;
+  void on_message(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
+    handler(channel, static_cast<const std::uint8_t*>(rbuf->data),
+            static_cast<int>(rbuf->data_size));
+  }
+};
+
+Transport::Transport(const TransportOptions& options)
+    : url_(options.url.empty() ? kDefaultLcmUrl : options.url),
+      lcm_(url_),
+      drop_rate_(options.drop_rate),
+      drop_rng_(options.drop_seed) {
+  if (!lcm_.good())
+    throw std::runtime_error(
+        "LCM could not start on " + url_ +
+        ". For udpm:// on one machine the loopback interface needs a multicast route: "
+        "`sudo ip link set lo multicast on && sudo ip route add 224.0.0.0/4 dev lo`; "
+        "or pass another --lcm-url.");
+}
+
+Transport::~Transport() = default;
+
+void Transport::subscribe(const std::string& channel, RawHandler handler) {
+  auto sub = std::make_unique<Subscription>();
+  sub->handler = std::move(handler);
+  lcm_.subscribe(channel, &Subscription::on_message, sub.get());
+  subscriptions_.push_back(std::move(sub));
+}
+
+void Transport::publish_raw(const std::string& channel, const std::uint8_t* data, int size) {
+  std::lock_guard lock(publish_mutex_);
+  ++published_;
+  if (drop_rate_ > 0 && std::uniform_real_distribution<double>(0, 1)(drop_rng_) < drop_rate_) {
+    ++dropped_;
+    return;
+  }
+  lcm_.publish(channel, data, static_cast<unsigned>(size));
+}
+
+bool Transport::handle(int timeout_ms) { return lcm_.handleTimeout(timeout_ms) > 0; }
+
+}  // namespace olympics::protocol

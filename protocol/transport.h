@@ -1,0 +1,69 @@
+// LCM with what the protocol needs around it: raw subscriptions (so undecodable packets can be
+// answered with an error instead of silently dropped), thread-safe publishing, and, for tests,
+// injected datagram loss.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <lcm/lcm-cpp.hpp>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace olympics::protocol {
+
+struct TransportOptions {
+  std::string url;         // empty: kDefaultLcmUrl
+  double drop_rate = 0.0;  // test flag: share of published messages silently dropped
+  std::uint64_t drop_seed = 1;
+};
+
+class Transport {
+ public:
+  // Throws std::runtime_error saying how to fix the multicast route when LCM cannot start.
+  explicit Transport(const TransportOptions& options = {});
+  ~Transport();
+
+  using RawHandler =
+      std::function<void(const std::string& channel, const std::uint8_t* data, int size)>;
+  // channel is a regular expression, as in LCM.
+  void subscribe(const std::string& channel, RawHandler handler);
+
+  template <typename Msg>
+  void publish(const std::string& channel, const Msg& msg) {
+    std::vector<std::uint8_t> buf(msg.getEncodedSize());
+    msg.encode(buf.data(), 0, static_cast<int>(buf.size()));
+    publish_raw(channel, buf.data(), static_cast<int>(buf.size()));
+  }
+  void publish_raw(const std::string& channel, const std::uint8_t* data, int size);
+
+  // Handles at most one message, waiting up to timeout_ms; returns true if one was handled.
+  bool handle(int timeout_ms);
+  long published() const { return published_; }
+  long dropped() const { return dropped_; }
+  const std::string& url() const { return url_; }
+
+ private:
+  struct Subscription;
+  std::string url_;
+  lcm::LCM lcm_;
+  double drop_rate_;
+  std::mt19937_64 drop_rng_;
+  std::mutex publish_mutex_;
+  std::atomic<long> published_{0}, dropped_{0};
+  std::vector<std::unique_ptr<Subscription>> subscriptions_;
+};
+
+// Decodes an LCM message; nullopt when the bytes are truncated, corrupt or of another type.
+template <typename Msg>
+std::optional<Msg> decode(const std::uint8_t* data, int size) {
+  Msg msg;
+  if (msg.decode(data, 0, size) < 0) return std::nullopt;
+  return msg;
+}
+
+}  // namespace olympics::protocol

@@ -1,0 +1,292 @@
+#include "match_host.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "channels.h"
+#include "olympics/error_t.hpp"
+#include "olympics/heartbeat_t.hpp"
+#include "olympics/join_t.hpp"
+#include "olympics/match_request_t.hpp"
+#include "olympics/server_announce_t.hpp"
+#include "registry.h"
+#include "version.h"
+
+namespace olympics::server {
+namespace {
+constexpr size_t kRememberedResults = 1000;
+constexpr double kPeerTimeoutS = 3.0;
+}  // namespace
+
+MatchHost::MatchHost(HostSettings settings, protocol::Transport& transport, ResultsStore& store)
+    : settings_(std::move(settings)), transport_(transport), store_(store) {
+  int n = settings_.workers > 0
+              ? settings_.workers
+              : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  if (!settings_.replay_dir.empty()) std::filesystem::create_directories(settings_.replay_dir);
+  for (int i = 0; i < n; ++i) workers_.push_back(std::make_unique<Worker>());
+  for (auto& w : workers_) w->thread = std::thread([this, raw = w.get()] { worker_loop(*raw); });
+}
+
+MatchHost::~MatchHost() {
+  stopping_ = true;
+  for (auto& w : workers_) {
+    { std::lock_guard lock(w->mutex); }
+    w->wake.notify_all();
+    w->thread.join();
+  }
+}
+
+int MatchHost::active_matches() const {
+  std::lock_guard lock(routes_mutex_);
+  return static_cast<int>(routes_.size());
+}
+
+void MatchHost::error(const std::string& match_id, const std::string& client_id,
+                      const std::string& code, const std::string& message) {
+  olympics::error_t e;
+  e.protocol_version = protocol::kProtocolVersion;
+  e.server_id = settings_.server_id;
+  e.match_id = match_id;
+  e.client_id = client_id;
+  e.code = code;
+  e.message = message;
+  std::fprintf(stderr, "[server %s] %s: %s\n", settings_.server_id.c_str(), code.c_str(),
+               message.c_str());
+  transport_.publish(protocol::kError, e);
+}
+
+void MatchHost::run(const std::atomic<bool>& stop) {
+  transport_.subscribe(protocol::kRequest, [this](const std::string&, const std::uint8_t* d,
+                                                  int n) { on_request(d, n); });
+  transport_.subscribe(protocol::kAnnounce, [this](const std::string&, const std::uint8_t* d,
+                                                   int n) { on_announce(d, n); });
+  transport_.subscribe(
+      protocol::kJoin, [this](const std::string& ch, const std::uint8_t* d, int n) {
+        auto join = protocol::decode<olympics::join_t>(d, n);
+        if (!join)
+          return error("", "", "MALFORMED",
+                       "could not decode a join_t of " + std::to_string(n) +
+                           " bytes: truncated, corrupted, or from another protocol "
+                           "version; upgrade the client");
+        route(join->match_id, ch, d, n, join->client_id);
+      });
+  transport_.subscribe(protocol::kHeartbeat,
+                       [this](const std::string& ch, const std::uint8_t* d, int n) {
+                         if (auto beat = protocol::decode<olympics::heartbeat_t>(d, n))
+                           route(beat->match_id, ch, d, n, beat->client_id);
+                       });
+  transport_.subscribe(std::string(protocol::kActPrefix) + ".*",
+                       [this](const std::string& ch, const std::uint8_t* d, int n) {
+                         route(ch.substr(std::string(protocol::kActPrefix).size()), ch, d, n, "");
+                       });
+  auto next_announce = std::chrono::steady_clock::now();
+  while (!stop) {
+    transport_.handle(20);
+    auto now = std::chrono::steady_clock::now();
+    if (now >= next_announce) {
+      announce();
+      next_announce =
+          now + std::chrono::milliseconds(static_cast<int>(settings_.announce_interval_s * 1000));
+    }
+  }
+}
+
+void MatchHost::announce() {
+  olympics::server_announce_t a;
+  a.protocol_version = protocol::kProtocolVersion;
+  a.server_id = settings_.server_id;
+  a.server_version = protocol::kSoftwareVersion;
+  a.timestamp_us = std::chrono::duration_cast<std::chrono::microseconds>(
+                       std::chrono::system_clock::now().time_since_epoch())
+                       .count();
+  a.capacity = settings_.capacity;
+  a.active_matches = active_matches();
+  a.sports = sports::sport_names();
+  a.num_sports = static_cast<int>(a.sports.size());
+  transport_.publish(protocol::kAnnounce, a);
+}
+
+void MatchHost::on_announce(const std::uint8_t* data, int size) {
+  auto a = protocol::decode<olympics::server_announce_t>(data, size);
+  if (!a || a->server_id == settings_.server_id) return;
+  std::lock_guard lock(routes_mutex_);
+  peers_[a->server_id] = {std::chrono::steady_clock::now(), a->capacity - a->active_matches};
+}
+
+// Several servers on one network all hear a request addressed to nobody; the one with the
+// smallest id among those with room takes it, so exactly one answers.
+bool MatchHost::should_take_unaddressed_request() {
+  auto now = std::chrono::steady_clock::now();
+  std::lock_guard lock(routes_mutex_);
+  for (const auto& [id, seen] : peers_)
+    if (now - seen.first < std::chrono::duration<double>(kPeerTimeoutS) && seen.second > 0 &&
+        id < settings_.server_id)
+      return false;
+  return true;
+}
+
+void MatchHost::on_request(const std::uint8_t* data, int size) {
+  auto req = protocol::decode<olympics::match_request_t>(data, size);
+  if (!req)
+    return error("", "", "MALFORMED",
+                 "could not decode a match_request_t of " + std::to_string(size) +
+                     " bytes: truncated, corrupted, or from another protocol version");
+  if (!req->server_id.empty() && req->server_id != settings_.server_id) return;
+  if (req->server_id.empty() && !should_take_unaddressed_request()) return;
+  if (auto v = protocol::version_mismatch(req->protocol_version))
+    return error("", "", "UPGRADE", *v);
+  {
+    std::lock_guard lock(routes_mutex_);
+    if (auto it = requests_.find(req->request_id);
+        it != requests_.end() && !req->request_id.empty()) {
+      transport_.publish(protocol::kCreated, it->second);  // a resent request: same match
+      return;
+    }
+  }
+  const sports::Sport* sport = sports::find_sport(req->sport);
+  if (!sport) {
+    std::string known;
+    for (const auto& n : sports::sport_names()) known += (known.empty() ? "" : ", ") + n;
+    return error("", "", "UNKNOWN_SPORT",
+                 "request " + req->request_id + ": unknown sport \"" + req->sport +
+                     "\"; known sports: " + known);
+  }
+  if (!(req->time_limit_s >= 0 && req->time_limit_s <= 3600))
+    return error("", "", "BAD_REQUEST",
+                 "request " + req->request_id + ": time_limit_s must be 0..3600");
+  if (active_matches() >= settings_.capacity)
+    return error("", "", "FULL",
+                 "request " + req->request_id + ": server " + settings_.server_id + " hosts " +
+                     std::to_string(settings_.capacity) + " matches already; try another server");
+
+  MatchIdentity id;
+  id.server_id = settings_.server_id;
+  id.sport = req->sport;
+  id.settings = {req->mode, static_cast<std::uint64_t>(req->seed),
+                 req->time_limit_s > 0 ? req->time_limit_s : sport->default_time_limit_s()};
+  id.realtime = req->realtime;
+  std::unique_ptr<sports::SportMatch> game;
+  try {
+    game = sport->create(id.settings);
+  } catch (const std::invalid_argument& e) {
+    return error("", "", "BAD_REQUEST", "request " + req->request_id + ": " + e.what());
+  }
+  int worker;
+  {
+    std::lock_guard lock(routes_mutex_);
+    id.match_id = settings_.server_id + "-" + std::to_string(next_match_number_++);
+    worker = next_worker_++ % static_cast<int>(workers_.size());
+    routes_[id.match_id] = worker;
+  }
+  std::unique_ptr<TrafficLog> log;
+  if (settings_.lcm_logs && !settings_.replay_dir.empty())
+    log = std::make_unique<TrafficLog>(settings_.replay_dir + "/" + id.match_id + ".lcmlog");
+  auto runtime =
+      std::make_unique<MatchRuntime>(id, req->realtime ? settings_.realtime : settings_.sync,
+                                     std::move(game), transport_, std::move(log));
+  olympics::match_created_t created = runtime->description();
+  created.request_id = req->request_id;
+  {
+    std::lock_guard lock(routes_mutex_);
+    if (!req->request_id.empty()) requests_[req->request_id] = created;
+  }
+  Worker& w = *workers_[worker];
+  {
+    std::lock_guard lock(w.mutex);
+    w.entries[id.match_id].match = std::move(runtime);
+  }
+  w.wake.notify_one();
+  transport_.publish(protocol::kCreated, created);
+}
+
+void MatchHost::route(const std::string& match_id, const std::string& channel,
+                      const std::uint8_t* data, int size, const std::string& client_id) {
+  int worker = -1;
+  {
+    std::lock_guard lock(routes_mutex_);
+    if (auto it = routes_.find(match_id); it != routes_.end())
+      worker = it->second;
+    else if (auto f = finished_.find(match_id); f != finished_.end()) {
+      transport_.publish(protocol::kResult, f->second);  // whoever still asks missed it
+      return;
+    }
+  }
+  if (worker < 0) {
+    if (channel == protocol::kHeartbeat) return;
+    // Another server's match on a shared network is not ours to refuse.
+    if (match_id.rfind(settings_.server_id + "-", 0) != 0) return;
+    return error(match_id, client_id, "UNKNOWN_MATCH",
+                 "no match \"" + match_id + "\" on server " + settings_.server_id +
+                     "; request one on " + protocol::kRequest + " and use the match_id it returns");
+  }
+  Worker& w = *workers_[worker];
+  {
+    std::lock_guard lock(w.mutex);
+    auto it = w.entries.find(match_id);
+    if (it == w.entries.end()) return;  // finishing right now
+    it->second.inbox.push_back({channel, std::vector<std::uint8_t>(data, data + size)});
+  }
+  w.wake.notify_one();
+}
+
+void MatchHost::worker_loop(Worker& w) {
+  using Clock = MatchRuntime::Clock;
+  while (!stopping_) {
+    std::vector<std::pair<MatchRuntime*, std::deque<Inbound>>> work;
+    {
+      std::lock_guard lock(w.mutex);
+      for (auto& [id, entry] : w.entries)
+        work.emplace_back(entry.match.get(), std::move(entry.inbox)), entry.inbox.clear();
+    }
+    auto next = Clock::now() + std::chrono::milliseconds(100);
+    std::vector<std::string> done;
+    for (auto& [match, inbox] : work) {
+      for (auto& msg : inbox) match->handle(msg.channel, msg.bytes, Clock::now());
+      next = std::min(next, match->poll(Clock::now()));
+      if (match->finished()) {
+        on_finished(*match);
+        done.push_back(match->match_id());
+      }
+    }
+    std::unique_lock lock(w.mutex);
+    for (const auto& id : done) w.entries.erase(id);
+    w.wake.wait_until(lock, next, [&] {
+      if (stopping_) return true;
+      for (auto& [id, entry] : w.entries)
+        if (!entry.inbox.empty()) return true;
+      return false;
+    });
+  }
+}
+
+void MatchHost::on_finished(MatchRuntime& match) {
+  try {
+    store_.record(match.stored_result());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "[%s] could not store the result: %s\n", match.match_id().c_str(),
+                 e.what());
+  }
+  if (!settings_.replay_dir.empty()) {
+    try {
+      write_replay(settings_.replay_dir + "/" + match.match_id() + ".replay", match.replay());
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "[%s] %s\n", match.match_id().c_str(), e.what());
+    }
+  }
+  const auto& r = match.result();
+  std::printf("[%s] %s %s finished after %d ticks: %s, winner team %d\n", r.match_id.c_str(),
+              r.sport.c_str(), r.mode.c_str(), r.ticks, r.reason.c_str(), r.winner_team);
+  std::fflush(stdout);
+  std::lock_guard lock(routes_mutex_);
+  routes_.erase(match.match_id());
+  finished_[match.match_id()] = r;
+  finished_order_.push_back(match.match_id());
+  if (finished_order_.size() > kRememberedResults) {
+    finished_.erase(finished_order_.front());
+    finished_order_.pop_front();
+  }
+  ++finished_count_;
+}
+
+}  // namespace olympics::server

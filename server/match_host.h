@@ -1,0 +1,92 @@
+// The server process's core: takes match requests, hosts many matches at once spread over
+// worker threads (one world per match), routes each client message to its match, announces
+// capacity, and stores every finished match.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <unordered_map>
+#include <vector>
+
+#include "match_runtime.h"
+#include "olympics/match_created_t.hpp"
+#include "olympics/match_result_t.hpp"
+#include "results_store.h"
+#include "transport.h"
+
+namespace olympics::server {
+
+struct HostSettings {
+  std::string server_id;
+  int capacity = 64;         // matches at once
+  int workers = 0;           // threads stepping matches; 0 = one per core
+  RuntimeSettings sync;      // lockstep matches
+  RuntimeSettings realtime;  // 30 Hz clock matches
+  std::string replay_dir;    // "" = no replays
+  bool lcm_logs = false;     // also write <match>.lcmlog beside the replay
+  double announce_interval_s = 1.0;
+};
+
+class MatchHost {
+ public:
+  MatchHost(HostSettings settings, protocol::Transport& transport, ResultsStore& store);
+  ~MatchHost();
+
+  // Serves until `stop` becomes true.
+  void run(const std::atomic<bool>& stop);
+  int active_matches() const;
+  long finished_matches() const { return finished_count_; }
+
+ private:
+  struct Inbound {
+    std::string channel;
+    std::vector<std::uint8_t> bytes;
+  };
+  struct Entry {
+    std::unique_ptr<MatchRuntime> match;
+    std::deque<Inbound> inbox;
+  };
+  struct Worker {
+    std::thread thread;
+    std::mutex mutex;
+    std::condition_variable wake;
+    std::unordered_map<std::string, Entry> entries;
+  };
+
+  void on_request(const std::uint8_t* data, int size);
+  void route(const std::string& match_id, const std::string& channel, const std::uint8_t* data,
+             int size, const std::string& client_id);
+  void on_announce(const std::uint8_t* data, int size);
+  bool should_take_unaddressed_request();
+  void announce();
+  void worker_loop(Worker& worker);
+  void on_finished(MatchRuntime& match);
+  void error(const std::string& match_id, const std::string& client_id, const std::string& code,
+             const std::string& message);
+
+  HostSettings settings_;
+  protocol::Transport& transport_;
+  ResultsStore& store_;
+  std::vector<std::unique_ptr<Worker>> workers_;
+  std::atomic<bool> stopping_{false};
+
+  mutable std::mutex routes_mutex_;
+  std::unordered_map<std::string, int> routes_;                // match id -> worker
+  std::map<std::string, olympics::match_created_t> requests_;  // request id -> created
+  std::map<std::string, olympics::match_result_t> finished_;   // recent results, to repeat
+  std::deque<std::string> finished_order_;
+  std::map<std::string, std::pair<std::chrono::steady_clock::time_point, int>>
+      peers_;  // id -> seen, free
+  std::atomic<long> finished_count_{0};
+  long next_match_number_ = 1;
+  int next_worker_ = 0;
+};
+
+}  // namespace olympics::server

@@ -1,0 +1,115 @@
+// One match on the server: joining, the lockstep or real-time tick loop, loss handling,
+// forfeits, and what it leaves behind (result, replay). Driven by one worker thread at a time.
+//
+// Sync mode: tick t waits for every client's action for t, republishing tick t's observation to
+// the clients still missing every `resend_interval_s`, up to `action_deadline_s`; then missing
+// actions repeat the previous one. Realtime mode: the clock ticks at 30 Hz; whatever arrived
+// since the last tick applies, late actions apply to the next tick. In both, a client that
+// misses `max_missed_ticks` ticks in a row, or is silent for `silent_timeout_s`, forfeits.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "olympics/action_batch_t.hpp"
+#include "olympics/heartbeat_t.hpp"
+#include "olympics/join_t.hpp"
+#include "olympics/match_created_t.hpp"
+#include "olympics/match_result_t.hpp"
+#include "replay.h"
+#include "results_store.h"
+#include "sport.h"
+#include "traffic_log.h"
+#include "transport.h"
+
+namespace olympics::server {
+
+struct RuntimeSettings {
+  double action_deadline_s = 1.0;
+  int max_missed_ticks = 5;
+  double resend_interval_s = 0.03;
+  double silent_timeout_s = 5.0;
+  double join_timeout_s = 60.0;
+};
+
+struct MatchIdentity {
+  std::string match_id;
+  std::string server_id;
+  std::string sport;
+  sports::MatchSettings settings;
+  bool realtime = false;
+};
+
+class MatchRuntime {
+ public:
+  using Clock = std::chrono::steady_clock;
+
+  MatchRuntime(MatchIdentity identity, RuntimeSettings settings,
+               std::unique_ptr<sports::SportMatch> game, protocol::Transport& transport,
+               std::unique_ptr<TrafficLog> log = nullptr);
+
+  const olympics::match_created_t& description() const { return description_; }
+  const std::string& match_id() const { return identity_.match_id; }
+
+  // A raw message from this match's channels (join, actions, heartbeat).
+  void handle(const std::string& channel, const std::vector<std::uint8_t>& bytes,
+              Clock::time_point now);
+  // Advances timers; returns when it next needs to be polled.
+  Clock::time_point poll(Clock::time_point now);
+
+  bool finished() const { return finished_; }
+  const olympics::match_result_t& result() const { return result_; }
+  StoredMatch stored_result() const;
+  Replay replay() const;
+
+ private:
+  enum class Phase { Joining, Running, Finished };
+  struct Client {
+    std::string id, agent, policy, policy_version;
+    std::vector<int> slots;
+    Clock::time_point last_heard;
+    int missed_in_row = 0;
+    bool acted_this_tick = false;
+    std::int64_t seq = 0;
+  };
+
+  void on_join(const olympics::join_t& join, Clock::time_point now);
+  void on_actions(const olympics::action_batch_t& batch, Clock::time_point now);
+  void on_heartbeat(const olympics::heartbeat_t& beat, Clock::time_point now);
+  void start(Clock::time_point now);
+  void advance(Clock::time_point now);
+  void publish_observations(const std::vector<int>& clients);
+  void finish(Clock::time_point now);
+  void forfeit(int client, const std::string& why, Clock::time_point now);
+  void error(const std::string& client_id, const std::string& code, const std::string& message);
+  int client_index(const std::string& client_id) const;
+  template <typename Msg>
+  void send(const std::string& channel, const Msg& msg);
+
+  MatchIdentity identity_;
+  RuntimeSettings settings_;
+  std::unique_ptr<sports::SportMatch> game_;
+  protocol::Transport& transport_;
+  std::unique_ptr<TrafficLog> log_;
+  olympics::match_created_t description_;
+
+  Phase phase_ = Phase::Joining;
+  bool finished_ = false;
+  std::vector<Client> clients_;
+  std::vector<int> slot_owner_;              // client index or -1
+  std::vector<std::vector<float>> current_;  // action applied per slot
+  std::vector<std::vector<float>> pending_;  // received for the coming tick
+  std::vector<std::uint8_t> has_pending_;
+  Clock::time_point created_at_, started_at_, tick_deadline_, next_resend_, next_realtime_tick_;
+  std::chrono::system_clock::time_point started_wall_;
+  std::optional<nlohmann::json> forfeit_;
+  std::vector<float> replay_actions_;
+  olympics::match_result_t result_;
+  std::int64_t finished_at_unix_ = 0;
+};
+
+}  // namespace olympics::server

@@ -1,0 +1,58 @@
+// Where finished matches are kept: SQLite by default (a file path), PostgreSQL by URL
+// (postgresql://...). One schema for both (docs/results.md).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace olympics::server {
+
+struct StoredParticipant {
+  int slot = 0;
+  int team = 0;
+  std::string agent;
+  std::string policy;
+  std::string policy_version;
+};
+
+struct StoredMatch {
+  std::string match_id;
+  std::string server_id;
+  std::string server_version;
+  std::string sport;
+  std::string mode;
+  std::int64_t seed = 0;
+  bool realtime = false;
+  int ticks = 0;
+  double wall_time_s = 0;
+  std::string reason;
+  int winner_team = -1;
+  std::vector<double> scores;  // per team
+  std::string info;            // JSON
+  std::int64_t finished_at_unix = 0;
+  std::vector<StoredParticipant> participants;
+};
+
+class ResultsStore {
+ public:
+  virtual ~ResultsStore() = default;
+  // Writes one match and its participants atomically; a match id already stored is an error.
+  virtual void record(const StoredMatch& match) = 0;
+  // Most recent first; `sport` empty = all sports.
+  virtual std::vector<StoredMatch> recent(int limit, const std::string& sport = "") = 0;
+  virtual std::optional<StoredMatch> find(const std::string& match_id) = 0;
+  virtual std::string describe() const = 0;  // "sqlite:/path" or the URL without password
+};
+
+// "postgresql://..." or "postgres://..." -> PostgreSQL; anything else is a SQLite file path.
+// Throws std::runtime_error with the reason and what to do when the store cannot be opened.
+std::unique_ptr<ResultsStore> open_results_store(const std::string& location);
+
+// Scores as the text stored in the scores column: "1.5,0".
+std::string scores_to_text(const std::vector<double>& scores);
+std::vector<double> scores_from_text(const std::string& text);
+
+}  // namespace olympics::server
