@@ -274,6 +274,7 @@ void MatchHost::on_finished(MatchRuntime& match) {
       std::fprintf(stderr, "[%s] %s\n", match.match_id().c_str(), e.what());
     }
   }
+  match.publish_result();
   const auto& r = match.result();
   std::printf("[%s] %s %s finished after %d ticks: %s, winner team %d\n", r.match_id.c_str(),
               r.sport.c_str(), r.mode.c_str(), r.ticks, r.reason.c_str(), r.winner_team);

@@ -21,6 +21,7 @@ MatchRuntime::Clock::duration seconds(double s) {
 }
 
 constexpr double kRealtimePeriod = 1.0 / 30.0;
+constexpr double kMaxResendGapS = 0.25;
 
 }  // namespace
 
@@ -74,6 +75,14 @@ void MatchRuntime::error(const std::string& client_id, const std::string& code,
   std::fprintf(stderr, "[%s] %s from %s: %s\n", identity_.match_id.c_str(), code.c_str(),
                client_id.empty() ? "?" : client_id.c_str(), message.c_str());
   send(protocol::kError, e);
+}
+
+// A client whose every slot is done (its humanoids are out) is not waited for: its actions
+// would change nothing.
+bool MatchRuntime::still_playing(const Client& k) const {
+  for (int s : k.slots)
+    if (!game_->outcome().done[s]) return true;
+  return false;
 }
 
 int MatchRuntime::client_index(const std::string& client_id) const {
@@ -139,7 +148,6 @@ void MatchRuntime::on_join(const olympics::join_t& join, Clock::time_point now) 
     reply.accepted = true;
     return send(protocol::kJoinReply, reply);
   }
-  if (phase_ != Phase::Joining) return refuse("SLOT_TAKEN", "the match has already started");
   for (size_t i = 0; i < wanted.size(); ++i) {
     int s = wanted[i];
     if (s < 0 || s >= game_->slot_count())
@@ -153,6 +161,7 @@ void MatchRuntime::on_join(const olympics::join_t& join, Clock::time_point now) 
       return refuse("SLOT_TAKEN", "slot " + std::to_string(s) + " is already taken by agent \"" +
                                       clients_[slot_owner_[s]].agent + "\"; choose a free slot");
   }
+  if (phase_ != Phase::Joining) return refuse("SLOT_TAKEN", "the match has already started");
   // Every observation message must fit one datagram.
   olympics::observation_batch_t probe;
   probe.num_slots = static_cast<int>(wanted.size());
@@ -199,7 +208,8 @@ void MatchRuntime::start(Clock::time_point now) {
   for (int s = 0; s < m.num_slots; ++s) m.agent_names.push_back(clients_[slot_owner_[s]].agent);
   send(protocol::kStart, m);
   tick_deadline_ = now + seconds(settings_.action_deadline_s);
-  next_resend_ = now + seconds(settings_.resend_interval_s);
+  resend_gap_s_ = settings_.resend_interval_s;
+  next_resend_ = now + seconds(resend_gap_s_);
   next_realtime_tick_ = now + seconds(kRealtimePeriod);
   std::vector<int> all(clients_.size());
   for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
@@ -212,10 +222,7 @@ void MatchRuntime::on_heartbeat(const olympics::heartbeat_t& beat, Clock::time_p
 }
 
 void MatchRuntime::on_actions(const olympics::action_batch_t& batch, Clock::time_point now) {
-  if (phase_ == Phase::Finished) {  // it missed the result: say it again
-    send(protocol::kResult, result_);
-    return;
-  }
+  if (phase_ == Phase::Finished) return publish_result();  // it missed the result: say it again
   int c = client_index(batch.client_id);
   if (c < 0)
     return error(batch.client_id, "UNKNOWN_CLIENT",
@@ -234,7 +241,11 @@ void MatchRuntime::on_actions(const olympics::action_batch_t& batch, Clock::time
                  "action for tick " + std::to_string(batch.tick) + " but the match is at tick " +
                      std::to_string(tick) + "; answer the observation you were sent");
   if (!identity_.realtime && batch.tick < tick) {
-    if (batch.tick == tick - 1) return;  // a resend of the action we already applied
+    if (batch.tick == tick - 1) {  // a resend: applied already, but the client missed tick t
+      publish_observations({c});
+      return;
+    }
+    publish_observations({c});  // it has fallen behind: show it where the match is
     return error(batch.client_id, "STALE_TICK",
                  "action for tick " + std::to_string(batch.tick) + " arrived at tick " +
                      std::to_string(tick) + " and was ignored");
@@ -248,8 +259,9 @@ void MatchRuntime::on_actions(const olympics::action_batch_t& batch, Clock::time
     has_pending_[batch.slots[i]] = 1;
   }
   clients_[c].acted_this_tick = true;
-  if (!identity_.realtime && std::all_of(clients_.begin(), clients_.end(),
-                                         [](const Client& k) { return k.acted_this_tick; }))
+  if (!identity_.realtime && std::all_of(clients_.begin(), clients_.end(), [&](const Client& k) {
+        return k.acted_this_tick || !still_playing(k);
+      }))
     advance(now);
 }
 
@@ -265,7 +277,8 @@ MatchRuntime::Clock::time_point MatchRuntime::poll(Clock::time_point now) {
     return created_at_ + seconds(settings_.join_timeout_s);
   }
   for (size_t c = 0; c < clients_.size(); ++c)
-    if (now - clients_[c].last_heard >= seconds(settings_.silent_timeout_s)) {
+    if (still_playing(clients_[c]) &&
+        now - clients_[c].last_heard >= seconds(settings_.silent_timeout_s)) {
       forfeit(static_cast<int>(c),
               "silent for " + std::to_string(settings_.silent_timeout_s) + " s", now);
       return now;
@@ -284,9 +297,11 @@ MatchRuntime::Clock::time_point MatchRuntime::poll(Clock::time_point now) {
   if (now >= next_resend_) {  // republish tick t to whoever has not answered it
     std::vector<int> missing;
     for (size_t c = 0; c < clients_.size(); ++c)
-      if (!clients_[c].acted_this_tick) missing.push_back(static_cast<int>(c));
+      if (!clients_[c].acted_this_tick && still_playing(clients_[c]))
+        missing.push_back(static_cast<int>(c));
     publish_observations(missing);
-    next_resend_ = now + seconds(settings_.resend_interval_s);
+    resend_gap_s_ = std::min(2 * resend_gap_s_, kMaxResendGapS);  // back off while waiting
+    next_resend_ = now + seconds(resend_gap_s_);
   }
   return std::min(tick_deadline_, next_resend_);
 }
@@ -294,7 +309,7 @@ MatchRuntime::Clock::time_point MatchRuntime::poll(Clock::time_point now) {
 void MatchRuntime::advance(Clock::time_point now) {
   for (size_t c = 0; c < clients_.size(); ++c) {
     Client& k = clients_[c];
-    k.missed_in_row = k.acted_this_tick ? 0 : k.missed_in_row + 1;
+    k.missed_in_row = (k.acted_this_tick || !still_playing(k)) ? 0 : k.missed_in_row + 1;
     k.acted_this_tick = false;
     if (k.missed_in_row >= settings_.max_missed_ticks)
       return forfeit(static_cast<int>(c),
@@ -310,7 +325,8 @@ void MatchRuntime::advance(Clock::time_point now) {
   }
   game_->step(actions);
   tick_deadline_ = now + seconds(settings_.action_deadline_s);
-  next_resend_ = now + seconds(settings_.resend_interval_s);
+  resend_gap_s_ = settings_.resend_interval_s;
+  next_resend_ = now + seconds(resend_gap_s_);
   std::vector<int> all(clients_.size());
   for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
   publish_observations(all);
@@ -396,8 +412,11 @@ void MatchRuntime::finish(Clock::time_point now) {
     r.policy_versions.push_back(k ? k->policy_version : "");
   }
   r.info = out.info.dump();
-  send(protocol::kResult, r);
+  // The host stores the result first and then publishes it (publish_result), so whoever hears
+  // the result can read it from the store.
 }
+
+void MatchRuntime::publish_result() { send(protocol::kResult, result_); }
 
 StoredMatch MatchRuntime::stored_result() const {
   StoredMatch m;

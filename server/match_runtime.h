@@ -62,6 +62,7 @@ class MatchRuntime {
   Clock::time_point poll(Clock::time_point now);
 
   bool finished() const { return finished_; }
+  void publish_result();
   const olympics::match_result_t& result() const { return result_; }
   StoredMatch stored_result() const;
   Replay replay() const;
@@ -87,6 +88,7 @@ class MatchRuntime {
   void forfeit(int client, const std::string& why, Clock::time_point now);
   void error(const std::string& client_id, const std::string& code, const std::string& message);
   int client_index(const std::string& client_id) const;
+  bool still_playing(const Client& k) const;
   template <typename Msg>
   void send(const std::string& channel, const Msg& msg);
 
@@ -106,6 +108,7 @@ class MatchRuntime {
   std::vector<std::uint8_t> has_pending_;
   Clock::time_point created_at_, started_at_, tick_deadline_, next_resend_, next_realtime_tick_;
   std::chrono::system_clock::time_point started_wall_;
+  double resend_gap_s_ = 0.03;  // grows while a tick waits, back to resend_interval_s after it
   std::optional<nlohmann::json> forfeit_;
   std::vector<float> replay_actions_;
   olympics::match_result_t result_;

@@ -6,8 +6,10 @@
 // Agents given the same --request-id share one match (the server dedupes the request), so two
 // processes can meet without passing a match id around.
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <thread>
 
 #include "match_client.h"
 #include "policies.h"
@@ -22,6 +24,7 @@ int main(int argc, char** argv) {
   std::uint64_t policy_seed = 1;
   bool json = false;
   double timeout_s = 60;
+  int think_ms = 0;
   app.add_option("--match", match_id, "join this match id (else request one)");
   app.add_option("--request-id", request.request_id,
                  "request id; agents with the same id share a match");
@@ -42,6 +45,7 @@ int main(int argc, char** argv) {
   app.add_option("--timeout", timeout_s, "give up when the server is silent this long (s)");
   app.add_option("--drop-rate", options.drop_rate, "TEST ONLY: drop this share of sent datagrams");
   app.add_option("--drop-seed", options.drop_seed, "TEST ONLY: seed of the drops");
+  app.add_option("--think-ms", think_ms, "sleep this long before each action (a slow policy)");
   app.add_flag("--json", json, "print the result as JSON");
   CLI11_PARSE(app, argc, argv);
   if (options.policy_id.empty()) options.policy_id = policy_name;
@@ -60,6 +64,7 @@ int main(int argc, char** argv) {
     while (auto obs = client.next(timeout_s)) {
       if (obs->all_done()) break;
       for (size_t i = 0; i < obs->slots.size(); ++i) policy->act(obs->obs[i], actions[i]);
+      if (think_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(think_ms));
       client.act(obs->tick, actions);
     }
     const auto& r = client.wait_result(timeout_s);

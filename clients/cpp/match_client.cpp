@@ -93,6 +93,7 @@ olympics::match_created_t MatchClient::request_match(const MatchRequest& r, doub
   req.realtime = r.realtime;
   pending_request_id_ = req.request_id;
   created_.reset();
+  errors_.clear();
   const auto deadline = Clock::now() + seconds(timeout_s);
   auto next_send = Clock::now();
   while (!created_) {
@@ -226,6 +227,7 @@ void MatchClient::act(int tick, const std::vector<std::vector<float>>& actions) 
   last_action_bytes_.resize(b.getEncodedSize());
   b.encode(last_action_bytes_.data(), 0, static_cast<int>(last_action_bytes_.size()));
   last_action_tick_ = tick;
+  resend_gap_s_ = options_.resend_interval_s;
   transport_.publish_raw(match_.action_channel, last_action_bytes_.data(),
                          static_cast<int>(last_action_bytes_.size()));
   last_send_ = Clock::now();

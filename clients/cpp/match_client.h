@@ -106,6 +106,8 @@ class MatchClient {
   std::optional<olympics::match_result_t> result_;
   std::vector<olympics::error_t> errors_;
   Clock::time_point last_heartbeat_, last_send_;
+  static constexpr double kMaxResendGapS = 0.25;
+  double resend_gap_s_ = 0.03;
 };
 
 }  // namespace olympics::client

@@ -1,0 +1,219 @@
+// Bad input gets a clear error on OLY_ERROR and disturbs nothing: the match it was aimed at
+// still plays to its end and is stored.
+#include <cmath>
+#include <fstream>
+
+#include "channels.h"
+#include "match_client.h"
+#include "olympics/action_batch_t.hpp"
+#include "olympics/error_t.hpp"
+#include "olympics/join_t.hpp"
+#include "server_fixture.h"
+#include "version.h"
+
+namespace olympics::testing {
+namespace {
+
+// Listens to OLY_ERROR and sends hand-made (bad) messages.
+class Prankster {
+ public:
+  explicit Prankster(const std::string& url) : transport_({url}) {
+    transport_.subscribe(protocol::kError,
+                         [this](const std::string&, const std::uint8_t* d, int n) {
+                           if (auto e = protocol::decode<olympics::error_t>(d, n))
+                             errors_.push_back(*e);
+                         });
+  }
+  // Waits up to 3 s for an error with this code; returns its message ("" if none came).
+  std::string expect_error(const std::string& code) {
+    auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+    while (std::chrono::steady_clock::now() < deadline) {
+      for (auto it = errors_.begin(); it != errors_.end(); ++it)
+        if (it->code == code) {
+          std::string m = it->message;
+          errors_.erase(it);
+          return m;
+        }
+      transport_.handle(20);
+    }
+    return "";
+  }
+  protocol::Transport& transport() { return transport_; }
+
+ private:
+  protocol::Transport transport_;
+  std::vector<olympics::error_t> errors_;
+};
+
+olympics::action_batch_t action(const client::MatchClient& c, int tick, std::vector<int> slots,
+                                int size) {
+  olympics::action_batch_t b;
+  b.protocol_version = protocol::kProtocolVersion;
+  b.match_id = c.match().match_id;
+  b.client_id = c.client_id();
+  b.tick = tick;
+  b.num_slots = static_cast<int>(slots.size());
+  b.slots = slots;
+  b.action_size = size;
+  b.actions.assign(slots.size(), std::vector<float>(size, 0.0f));
+  return b;
+}
+
+TEST(BadInput, EveryBadMessageGetsAClearErrorAndTheMatchPlaysOn) {
+  ServerFixture server;
+  Prankster prank(server.url());
+  client::ClientOptions oa, ob;
+  oa.lcm_url = ob.lcm_url = server.url();
+  oa.agent_name = "a", ob.agent_name = "b";
+  client::MatchClient a(oa), b(ob);
+  client::MatchRequest req;
+  req.request_id = "bad";
+  req.time_limit_s = 3;
+  auto created = a.request_match(req);
+  a.join(created.match_id, {0});
+  b.join(created.match_id, {1});
+  const std::string act = created.action_channel;
+  const int size = created.action_size;
+
+  // A second client claiming a taken slot is refused and told why.
+  client::ClientOptions oc = oa;
+  oc.agent_name = "intruder";
+  client::MatchClient intruder(oc);
+  try {
+    intruder.join(created.match_id, {1}, 5);
+    ADD_FAILURE() << "the taken slot was given away";
+  } catch (const client::MatchError& e) {
+    EXPECT_EQ(e.code(), "SLOT_TAKEN");
+    EXPECT_NE(std::string(e.what()).find("already taken by agent \"b\""), std::string::npos)
+        << e.what();
+  }
+
+  auto oa0 = a.next(), ob0 = b.next();
+  ASSERT_TRUE(oa0 && ob0);
+  ASSERT_EQ(oa0->tick, 0);
+
+  auto nan = action(a, 0, {0}, size);
+  nan.actions[0][5] = std::nanf("");
+  prank.transport().publish(act, nan);
+  EXPECT_NE(prank.expect_error("BAD_ACTION").find("action[5] is NaN or Inf"), std::string::npos);
+
+  auto inf = action(a, 0, {0}, size);
+  inf.actions[0][0] = INFINITY;
+  prank.transport().publish(act, inf);
+  EXPECT_NE(prank.expect_error("BAD_ACTION"), "");
+
+  prank.transport().publish(act, action(a, 0, {0}, size - 1));
+  EXPECT_NE(prank.expect_error("BAD_ACTION").find("this match takes 69 floats"), std::string::npos);
+
+  prank.transport().publish(act, action(a, 0, {1}, size));  // b's slot
+  EXPECT_NE(prank.expect_error("UNKNOWN_SLOT").find("slot 1 is not yours"), std::string::npos);
+  prank.transport().publish(act, action(a, 0, {7}, size));
+  EXPECT_NE(prank.expect_error("UNKNOWN_SLOT").find("slot 7 does not exist"), std::string::npos);
+
+  prank.transport().publish(act, action(a, 5, {0}, size));
+  EXPECT_NE(prank.expect_error("FUTURE_TICK").find("the match is at tick 0"), std::string::npos);
+
+  auto old = action(a, 0, {0}, size);
+  old.protocol_version = 99;
+  prank.transport().publish(act, old);
+  EXPECT_NE(prank.expect_error("UPGRADE").find("upgrade the server"), std::string::npos);
+
+  prank.transport().publish(protocol::action_channel("srv-999"), action(a, 0, {0}, size));
+  EXPECT_NE(prank.expect_error("UNKNOWN_MATCH").find("no match \"srv-999\""), std::string::npos);
+
+  // Truncated and garbage packets.
+  auto good = action(a, 0, {0}, size);
+  std::vector<std::uint8_t> bytes(good.getEncodedSize());
+  good.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  prank.transport().publish_raw(act, bytes.data(), static_cast<int>(bytes.size()) / 2);
+  EXPECT_NE(prank.expect_error("MALFORMED").find("could not decode a action_batch_t"),
+            std::string::npos);
+  const std::uint8_t garbage[] = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+  prank.transport().publish_raw(protocol::kJoin, garbage, sizeof garbage);
+  EXPECT_NE(prank.expect_error("MALFORMED").find("join_t"), std::string::npos);
+  prank.transport().publish_raw(protocol::kRequest, garbage, sizeof garbage);
+  EXPECT_NE(prank.expect_error("MALFORMED").find("match_request_t"), std::string::npos);
+
+  // None of it moved the match: still tick 0, and it plays on to a stored end.
+  std::vector<std::vector<float>> zero(1, std::vector<float>(size, 0.0f));
+  a.act(0, zero);
+  b.act(0, zero);
+  auto oa1 = a.next();
+  ASSERT_TRUE(oa1);
+  EXPECT_EQ(oa1->tick, 1);
+  b.next();
+  prank.transport().publish(act, action(a, 0, {0}, size));  // a resend of tick 0: ignored quietly
+  a.act(1, zero);
+  b.act(1, zero);
+  a.next(), b.next();
+  a.act(2, zero), b.act(2, zero);
+  a.next(), b.next();
+  prank.transport().publish(act, action(a, 0, {0}, size));  // two ticks old: stale
+  EXPECT_NE(prank.expect_error("STALE_TICK").find("action for tick 0 arrived at tick 3"),
+            std::string::npos);
+  for (int tick = 3;; ++tick) {
+    a.act(tick, zero), b.act(tick, zero);
+    auto x = a.next();
+    auto y = b.next();
+    if (!x || x->all_done()) break;
+  }
+  const auto& result = a.wait_result();
+  EXPECT_GT(result.ticks, 3);
+  EXPECT_TRUE(server.store().find(created.match_id).has_value());
+}
+
+TEST(BadInput, UnknownSportListsTheKnownOnes) {
+  ServerFixture server;
+  client::ClientOptions o;
+  o.lcm_url = server.url();
+  client::MatchClient c(o);
+  client::MatchRequest req;
+  req.sport = "quidditch";
+  try {
+    c.request_match(req, 5);
+    ADD_FAILURE() << "an unknown sport was accepted";
+  } catch (const client::MatchError& e) {
+    EXPECT_EQ(e.code(), "UNKNOWN_SPORT");
+    EXPECT_NE(std::string(e.what()).find("unknown sport \"quidditch\"; known sports: sandbox"),
+              std::string::npos)
+        << e.what();
+  }
+  req.sport = "sandbox";
+  req.mode = "9v9";
+  try {
+    c.request_match(req, 5);
+    ADD_FAILURE() << "an unknown mode was accepted";
+  } catch (const client::MatchError& e) {
+    EXPECT_EQ(e.code(), "BAD_REQUEST");
+    EXPECT_NE(std::string(e.what()).find("modes: 1v1, 2v2"), std::string::npos) << e.what();
+  }
+}
+
+TEST(BadInput, BadConfigFileNamesFileLineAndProblem) {
+  std::string dir = temp_dir();
+  auto run_with = [&](const std::string& text) {
+    std::ofstream(dir + "/bad.toml") << text;
+    Process p({program("olympics-server"), "serve", "--config", dir + "/bad.toml"},
+              dir + "/out.log");
+    EXPECT_EQ(p.wait(10), 2);
+    return p.output();
+  };
+  std::string out = run_with("[server]\ncapacity = 4\ncapacty = 5\n");
+  EXPECT_NE(out.find("bad.toml:3:11: unknown key \"capacty\" in [server]"), std::string::npos)
+      << out;
+  out = run_with("[server]\ncapacity = \"many\"\n");
+  EXPECT_NE(out.find("bad.toml:2:12: [server] capacity has the wrong type"), std::string::npos)
+      << out;
+  out = run_with("[server\n");
+  EXPECT_NE(out.find("bad.toml:1:"), std::string::npos) << out;
+  out = run_with("[sevrer]\nid = \"x\"\n");
+  EXPECT_NE(out.find("unknown section \"sevrer\""), std::string::npos) << out;
+  Process missing({program("olympics-server"), "serve", "--config", dir + "/none.toml"},
+                  dir + "/m.log");
+  EXPECT_EQ(missing.wait(10), 2);
+  EXPECT_NE(missing.output().find("none.toml: cannot open the config file"), std::string::npos)
+      << missing.output();
+}
+
+}  // namespace
+}  // namespace olympics::testing

@@ -1,0 +1,41 @@
+// Real processes for integration tests: start a program, read what it printed, wait, kill.
+#pragma once
+
+#include <sys/types.h>
+
+#include <string>
+#include <vector>
+
+namespace olympics::testing {
+
+class Process {
+ public:
+  // Starts `argv` with stdout and stderr going to `log_path`.
+  Process(const std::vector<std::string>& argv, const std::string& log_path);
+  ~Process();  // SIGKILLs it if still running
+  Process(const Process&) = delete;
+  Process& operator=(const Process&) = delete;
+
+  // Exit code, or -1 if it is still running after timeout_s (it is left running).
+  int wait(double timeout_s);
+  void signal(int sig);
+  bool running();
+  std::string output() const;
+  // Waits until the output contains `text`; false on timeout or exit.
+  bool wait_for_output(const std::string& text, double timeout_s);
+
+ private:
+  pid_t pid_ = -1;
+  int status_ = -1;
+  bool reaped_ = false;
+  std::string log_path_;
+};
+
+// A fresh LCM URL (own port) per call, so tests never hear each other.
+std::string unique_lcm_url();
+// A fresh empty directory under /tmp.
+std::string temp_dir();
+// build/bin/<name>
+std::string program(const std::string& name);
+
+}  // namespace olympics::testing

@@ -1,0 +1,68 @@
+// An olympics-server process of its own (own LCM port, own results database and replay folder)
+// for one integration test, and agent processes that talk to it.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "process.h"
+#include "replay.h"
+#include "sqlite_results_store.h"
+
+namespace olympics::testing {
+
+class ServerFixture {
+ public:
+  explicit ServerFixture(std::vector<std::string> extra_args = {},
+                         std::string url = unique_lcm_url())
+      : url_(std::move(url)), dir_(temp_dir()) {
+    std::vector<std::string> argv = {program("olympics-server"),
+                                     "serve",
+                                     "--lcm-url",
+                                     url_,
+                                     "--results",
+                                     results_path(),
+                                     "--replay-dir",
+                                     dir_ + "/replays",
+                                     "--id",
+                                     "srv"};
+    argv.insert(argv.end(), extra_args.begin(), extra_args.end());
+    server_ = std::make_unique<Process>(argv, dir_ + "/server.log");
+    if (!server_->wait_for_output("olympics-server", 10))
+      ADD_FAILURE() << "server did not start:\n" << server_->output();
+  }
+
+  std::unique_ptr<Process> agent(const std::string& name, std::vector<std::string> args) {
+    std::vector<std::string> argv = {
+        program("olympics-agent"), "--lcm-url", url_, "--name", name, "--json", "--timeout", "30"};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return std::make_unique<Process>(argv, dir_ + "/agent-" + name + ".log");
+  }
+
+  // The JSON result line an agent printed (empty object if none).
+  static nlohmann::json agent_result(const Process& p) {
+    std::string out = p.output();
+    size_t at = out.find("{\"agents\"");
+    if (at == std::string::npos) return nlohmann::json::object();
+    return nlohmann::json::parse(out.substr(at, out.find('\n', at) - at));
+  }
+
+  server::SqliteResultsStore store() { return server::SqliteResultsStore(results_path()); }
+  server::Replay replay(const std::string& match_id) {
+    return server::read_replay(dir_ + "/replays/" + match_id + ".replay");
+  }
+  std::string results_path() const { return dir_ + "/results.db"; }
+  const std::string& url() const { return url_; }
+  const std::string& dir() const { return dir_; }
+  Process& server() { return *server_; }
+
+ private:
+  std::string url_, dir_;
+  std::unique_ptr<Process> server_;
+};
+
+}  // namespace olympics::testing
