@@ -1,10 +1,12 @@
 // olympics-bench: performance figures, printed side by side with their references.
 //
 //   olympics-bench physics [--json] [--seconds S] [--repeats R] [--threads T] [--no-mujoco]
+//   olympics-bench server  [--json] [--seconds S] [--matches M] [--workers W]
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
 #include "physics_bench.h"
+#include "server_bench.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Performance figures for the humanoid sports server"};
@@ -20,6 +22,15 @@ int main(int argc, char** argv) {
   phys->add_option("--threads", physics.max_threads, "thread sweep up to this many (0: all cores)");
   bool no_mujoco = false;
   phys->add_flag("--no-mujoco", no_mujoco, "skip the MuJoCo side");
+  olympics::bench::ServerBenchOptions server;
+  auto* serv =
+      app.add_subcommand("server", "match ticks/s over LCM vs bare physics, round-trip latency");
+  serv->add_flag("--json", json, "print one JSON object instead of a table");
+  serv->add_option("--seconds", server.seconds, "wall seconds to measure")
+      ->check(CLI::PositiveNumber);
+  serv->add_option("--matches", server.matches, "concurrent matches")->check(CLI::PositiveNumber);
+  serv->add_option("--workers", server.workers, "server worker threads")
+      ->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);
 
   if (*phys) {
@@ -29,6 +40,13 @@ int main(int argc, char** argv) {
       std::printf("%s\n", report.dump(2).c_str());
     else
       olympics::bench::print_physics_report(report);
+  }
+  if (*serv) {
+    auto report = olympics::bench::run_server_bench(server);
+    if (json)
+      std::printf("%s\n", report.dump(2).c_str());
+    else
+      olympics::bench::print_server_report(report);
   }
   return 0;
 }

@@ -8,6 +8,7 @@ namespace olympics::protocol {
 
 struct Transport::Subscription {
   RawHandler handler;
+  lcm::Subscription* lcm_subscription = nullptr;
   void on_message(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
     handler(channel, static_cast<const std::uint8_t*>(rbuf->data),
             static_cast<int>(rbuf->data_size));
@@ -29,11 +30,19 @@ Transport::Transport(const TransportOptions& options)
 
 Transport::~Transport() = default;
 
-void Transport::subscribe(const std::string& channel, RawHandler handler) {
+int Transport::subscribe(const std::string& channel, RawHandler handler) {
   auto sub = std::make_unique<Subscription>();
   sub->handler = std::move(handler);
-  lcm_.subscribe(channel, &Subscription::on_message, sub.get());
+  sub->lcm_subscription = lcm_.subscribe(channel, &Subscription::on_message, sub.get());
   subscriptions_.push_back(std::move(sub));
+  return static_cast<int>(subscriptions_.size()) - 1;
+}
+
+void Transport::unsubscribe(int handle) {
+  auto& sub = subscriptions_.at(handle);
+  if (!sub) return;
+  lcm_.unsubscribe(sub->lcm_subscription);
+  sub.reset();
 }
 
 void Transport::publish_raw(const std::string& channel, const std::uint8_t* data, int size) {

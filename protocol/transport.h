@@ -30,8 +30,9 @@ class Transport {
 
   using RawHandler =
       std::function<void(const std::string& channel, const std::uint8_t* data, int size)>;
-  // channel is a regular expression, as in LCM.
-  void subscribe(const std::string& channel, RawHandler handler);
+  // channel is a regular expression, as in LCM. Returns a handle for unsubscribe().
+  int subscribe(const std::string& channel, RawHandler handler);
+  void unsubscribe(int handle);
 
   template <typename Msg>
   void publish(const std::string& channel, const Msg& msg) {

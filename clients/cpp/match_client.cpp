@@ -145,27 +145,34 @@ olympics::match_created_t MatchClient::join(const std::string& match_id,
     errors_.clear();
     throw MatchError(code, join_refusal_);
   }
+  // A client may play one match after another: forget the previous one.
   slots_ = slots;
   std::sort(slots_.begin(), slots_.end());
   joined_ = true;
-  transport_.subscribe(match_.obs_channel,
-                       [this](const std::string&, const std::uint8_t* d, int n) {
-                         auto b = protocol::decode<olympics::observation_batch_t>(d, n);
-                         if (!b || b->client_id != client_id_ || b->tick <= last_returned_tick_)
-                           return;  // ours, and new
-                         if (latest_ && latest_->tick >= b->tick) return;
-                         Observation o;
-                         o.tick = b->tick;
-                         o.slots = b->slots;
-                         o.obs = b->obs;
-                         o.reward = b->reward;
-                         o.term_names = b->term_names;
-                         o.terms = b->terms;
-                         o.done.assign(b->done.begin(), b->done.end());
-                         o.truncated.assign(b->truncated.begin(), b->truncated.end());
-                         o.info = b->info;
-                         latest_ = std::move(o);
-                       });
+  result_.reset();
+  latest_.reset();
+  last_returned_tick_ = -1;
+  last_action_bytes_.clear();
+  if (obs_subscription_ >= 0) transport_.unsubscribe(obs_subscription_);
+  obs_subscription_ = transport_.subscribe(
+      match_.obs_channel, [this](const std::string&, const std::uint8_t* d, int n) {
+        auto b = protocol::decode<olympics::observation_batch_t>(d, n);
+        if (!b || b->client_id != client_id_ || b->match_id != match_.match_id ||
+            b->tick <= last_returned_tick_)
+          return;  // ours, and new
+        if (latest_ && latest_->tick >= b->tick) return;
+        Observation o;
+        o.tick = b->tick;
+        o.slots = b->slots;
+        o.obs = b->obs;
+        o.reward = b->reward;
+        o.term_names = b->term_names;
+        o.terms = b->terms;
+        o.done.assign(b->done.begin(), b->done.end());
+        o.truncated.assign(b->truncated.begin(), b->truncated.end());
+        o.info = b->info;
+        latest_ = std::move(o);
+      });
   last_heartbeat_ = Clock::now();
   return match_;
 }

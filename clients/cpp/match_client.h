@@ -68,7 +68,8 @@ class MatchClient {
   const std::string& client_id() const { return client_id_; }
 
   olympics::match_created_t request_match(const MatchRequest& request, double timeout_s = 10);
-  // Claims `slots` of a match; returns its description. Throws MatchError when refused.
+  // Claims `slots` of a match; returns its description. Throws MatchError when refused. A client
+  // may join one match after another; joining forgets the previous match.
   olympics::match_created_t join(const std::string& match_id, const std::vector<int>& slots,
                                  double timeout_s = 30);
   // The next tick's observations; nullopt once the match is over and its result is in.
@@ -94,6 +95,7 @@ class MatchClient {
   olympics::match_created_t match_;
   std::vector<int> slots_;
   bool joined_ = false;
+  int obs_subscription_ = -1;
   std::string pending_request_id_;
   std::optional<olympics::match_created_t> created_;
   std::optional<bool> join_accepted_;

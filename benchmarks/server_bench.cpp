@@ -1,0 +1,145 @@
+#include "server_bench.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+#include "match_client.h"
+#include "match_host.h"
+#include "registry.h"
+#include "sqlite_results_store.h"
+
+namespace olympics::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Sandbox 1v1 matches, zero actions, played back to back; ticks per wall second.
+double bare_ticks_per_second(int matches, double seconds) {
+  const sports::Sport& sandbox = sports::sport_or_throw("sandbox");
+  std::vector<std::unique_ptr<sports::SportMatch>> games;
+  for (int m = 0; m < matches; ++m)
+    games.push_back(sandbox.create({"1v1", static_cast<std::uint64_t>(m), 20}));
+  std::vector<float> zero(69, 0.0f);
+  std::vector<std::span<const float>> actions(2, zero);
+  long ticks = 0;
+  auto start = Clock::now();
+  double elapsed = 0;
+  std::uint64_t next_seed = matches;
+  while (elapsed < seconds) {
+    for (auto& g : games) {
+      // Observations are part of a tick's cost on the server too.
+      std::vector<float> obs(g->obs_size());
+      for (int s = 0; s < 2; ++s) g->observe(s, obs);
+      g->step(actions);
+      ++ticks;
+      if (g->outcome().match_over) g = sandbox.create({"1v1", next_seed++, 20});
+    }
+    elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+  }
+  return ticks / elapsed;
+}
+
+double percentile(std::vector<double> v, double p) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, static_cast<size_t>(p * v.size()))];
+}
+
+}  // namespace
+
+nlohmann::json run_server_bench(const ServerBenchOptions& o) {
+  const std::string url = "udpm://239.255.76.67:" + std::to_string(17000 + getpid() % 10000) +
+                          "?ttl=0&recv_buf_size=4194304";
+  char db[] = "/tmp/olympics-bench-XXXXXX";
+  int fd = mkstemp(db);
+  close(fd);
+  server::SqliteResultsStore store(db);
+  protocol::Transport server_transport({url});
+  server::HostSettings settings;
+  settings.server_id = "bench";
+  settings.workers = o.workers;
+  settings.capacity = o.matches * 4;
+  server::MatchHost host(settings, server_transport, store);
+  std::atomic<bool> stop_server{false};
+  std::thread server_thread([&] { host.run(stop_server); });
+
+  std::atomic<bool> stop_clients{false};
+  std::atomic<long> ticks{0};
+  std::vector<std::vector<double>> round_trips(o.matches);
+  std::vector<std::thread> clients;
+  auto start = Clock::now();
+  for (int m = 0; m < o.matches; ++m)
+    clients.emplace_back([&, m] {
+      client::ClientOptions co;
+      co.lcm_url = url;
+      co.agent_name = "bench" + std::to_string(m);
+      client::MatchClient c(co);
+      for (int game = 0; !stop_clients; ++game) {
+        client::MatchRequest req;
+        req.request_id = "bench-" + std::to_string(m) + "-" + std::to_string(game);
+        req.seed = game;
+        auto created = c.request_match(req);
+        c.join(created.match_id, {0, 1});
+        std::vector<std::vector<float>> zero(2, std::vector<float>(created.action_size, 0.0f));
+        auto sent = Clock::now();
+        bool acted = false;
+        while (auto obs = c.next()) {
+          if (acted)
+            round_trips[m].push_back(
+                std::chrono::duration<double, std::micro>(Clock::now() - sent).count());
+          if (obs->all_done()) break;
+          sent = Clock::now();
+          c.act(obs->tick, zero);
+          acted = true;
+          ++ticks;
+        }
+        c.wait_result();
+      }
+    });
+  std::this_thread::sleep_for(std::chrono::duration<double>(o.seconds));
+  const long ticks_done = ticks;
+  const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+  stop_clients = true;
+  for (auto& t : clients) t.join();
+  stop_server = true;
+  server_thread.join();
+  std::remove(db);
+
+  std::vector<double> all;
+  for (auto& r : round_trips) all.insert(all.end(), r.begin(), r.end());
+  const double served = ticks_done / elapsed;
+  const double bare = bare_ticks_per_second(o.matches, o.seconds);
+  return {{"scene", "sandbox 1v1 (2 SMPL humanoids), zero actions, sync mode"},
+          {"matches", o.matches},
+          {"server_workers", o.workers},
+          {"served_ticks_per_s", served},
+          {"served_ticks_per_s_per_worker", served / o.workers},
+          {"bare_physics_ticks_per_s", bare},
+          {"ratio_server_over_bare", served / o.workers / bare},
+          {"round_trip_us_p50", percentile(all, 0.5)},
+          {"round_trip_us_p99", percentile(all, 0.99)},
+          {"round_trips_measured", all.size()}};
+}
+
+void print_server_report(const nlohmann::json& r) {
+  std::printf("server: %s, %d matches at once, %d server worker(s)\n",
+              r["scene"].get<std::string>().c_str(), r["matches"].get<int>(),
+              r["server_workers"].get<int>());
+  std::printf("  served           %8.0f ticks/s (%.0f per worker)\n",
+              r["served_ticks_per_s"].get<double>(),
+              r["served_ticks_per_s_per_worker"].get<double>());
+  std::printf("  bare physics     %8.0f ticks/s on one core (same scene, no network)\n",
+              r["bare_physics_ticks_per_s"].get<double>());
+  std::printf("  ratio            %8.2f (server per worker / bare)\n",
+              r["ratio_server_over_bare"].get<double>());
+  std::printf("  action -> next observation round trip: p50 %.0f us, p99 %.0f us (%ld samples)\n",
+              r["round_trip_us_p50"].get<double>(), r["round_trip_us_p99"].get<double>(),
+              r["round_trips_measured"].get<long>());
+}
+
+}  // namespace olympics::bench

@@ -1,0 +1,17 @@
+// `olympics-bench server`: match ticks/s of a real server over LCM against bare physics.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+namespace olympics::bench {
+
+struct ServerBenchOptions {
+  double seconds = 3.0;  // wall time per measurement
+  int matches = 4;       // concurrent matches, one client each (both slots)
+  int workers = 1;       // server threads: 1 = "per core"
+};
+
+nlohmann::json run_server_bench(const ServerBenchOptions& options);
+void print_server_report(const nlohmann::json& report);
+
+}  // namespace olympics::bench
