@@ -5,6 +5,9 @@
 #include "channels.h"
 
 namespace olympics::protocol {
+namespace {
+constexpr int kQueueCapacity = 100000;
+}
 
 struct Transport::Subscription {
   RawHandler handler;
@@ -34,6 +37,9 @@ int Transport::subscribe(const std::string& channel, RawHandler handler) {
   auto sub = std::make_unique<Subscription>();
   sub->handler = std::move(handler);
   sub->lcm_subscription = lcm_.subscribe(channel, &Subscription::on_message, sub.get());
+  // LCM drops messages beyond 30 queued per subscription by default; a server with many matches
+  // (or a player of a log) receives bursts far larger than that.
+  sub->lcm_subscription->setQueueCapacity(kQueueCapacity);
   subscriptions_.push_back(std::move(sub));
   return static_cast<int>(subscriptions_.size()) - 1;
 }
