@@ -1,0 +1,149 @@
+// Python bindings over the C++ client (module smpl_olympics._client). Blocking calls release the
+// GIL; observations arrive as float32 numpy arrays of shape (slots, obs_size).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "match_client.h"
+
+namespace py = pybind11;
+using namespace olympics::client;
+
+namespace {
+
+py::array_t<float> rows_to_array(const std::vector<std::vector<float>>& rows) {
+  const size_t cols = rows.empty() ? 0 : rows[0].size();
+  py::array_t<float> out({rows.size(), cols});
+  auto view = out.mutable_unchecked<2>();
+  for (size_t i = 0; i < rows.size(); ++i)
+    for (size_t k = 0; k < cols; ++k) view(i, k) = rows[i][k];
+  return out;
+}
+
+py::dict describe(const olympics::match_created_t& m) {
+  py::dict d;
+  d["match_id"] = m.match_id;
+  d["server_id"] = m.server_id;
+  d["sport"] = m.sport;
+  d["mode"] = m.mode;
+  d["seed"] = m.seed;
+  d["realtime"] = m.realtime;
+  d["num_slots"] = m.num_slots;
+  d["slot_team"] = m.slot_team;
+  d["obs_size"] = m.obs_size;
+  d["action_size"] = m.action_size;
+  return d;
+}
+
+py::dict result_dict(const olympics::match_result_t& r) {
+  py::dict d;
+  d["match_id"] = r.match_id;
+  d["sport"] = r.sport;
+  d["mode"] = r.mode;
+  d["seed"] = r.seed;
+  d["ticks"] = r.ticks;
+  d["duration_s"] = r.duration_s;
+  d["reason"] = r.reason;
+  d["winner_team"] = r.winner_team;
+  d["scores"] = r.scores;
+  d["slot_team"] = r.slot_team;
+  d["agent_names"] = r.agent_names;
+  return d;
+}
+
+py::object observation_dict(const std::optional<Observation>& o) {
+  if (!o) return py::none();
+  py::dict d;
+  d["tick"] = o->tick;
+  d["slots"] = o->slots;
+  d["obs"] = rows_to_array(o->obs);
+  d["reward"] = py::array_t<float>(o->reward.size(), o->reward.data());
+  d["term_names"] = o->term_names;
+  d["terms"] = rows_to_array(o->terms);
+  d["done"] = o->done;
+  d["truncated"] = o->truncated;
+  d["info"] = o->info;
+  return d;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_client, m) {
+  m.doc() = "SMPL Olympics match client (C++ MatchClient over LCM)";
+  py::register_exception<MatchError>(m, "MatchError", PyExc_RuntimeError);
+
+  py::class_<MatchClient>(m, "MatchClient")
+      .def(py::init([](const std::string& lcm_url, const std::string& agent_name, const std::string& policy_id,
+                       const std::string& policy_version) {
+             ClientOptions o;
+             o.lcm_url = lcm_url;
+             o.agent_name = agent_name;
+             o.policy_id = policy_id;
+             o.policy_version = policy_version;
+             return std::make_unique<MatchClient>(o);
+           }),
+           py::arg("lcm_url") = "", py::arg("agent_name") = "python", py::arg("policy_id") = "",
+           py::arg("policy_version") = "")
+      .def_property_readonly("client_id", &MatchClient::client_id)
+      .def(
+          "request_match",
+          [](MatchClient& c, const std::string& sport, const std::string& mode, std::int64_t seed,
+             double time_limit_s, bool realtime, const std::string& request_id, const std::string& server_id,
+             double timeout_s) {
+            MatchRequest r{sport, mode, seed, time_limit_s, realtime, request_id, server_id};
+            olympics::match_created_t created;
+            {
+              py::gil_scoped_release release;
+              created = c.request_match(r, timeout_s);
+            }
+            return describe(created);
+          },
+          py::arg("sport") = "sandbox", py::arg("mode") = "1v1", py::arg("seed") = 0, py::arg("time_limit_s") = 0.0,
+          py::arg("realtime") = false, py::arg("request_id") = "", py::arg("server_id") = "",
+          py::arg("timeout_s") = 10.0)
+      .def(
+          "join",
+          [](MatchClient& c, const std::string& match_id, const std::vector<int>& slots, double timeout_s) {
+            olympics::match_created_t joined;
+            {
+              py::gil_scoped_release release;
+              joined = c.join(match_id, slots, timeout_s);
+            }
+            return describe(joined);
+          },
+          py::arg("match_id"), py::arg("slots"), py::arg("timeout_s") = 30.0)
+      .def(
+          "next",
+          [](MatchClient& c, double timeout_s) {
+            std::optional<Observation> o;
+            {
+              py::gil_scoped_release release;
+              o = c.next(timeout_s);
+            }
+            return observation_dict(o);
+          },
+          py::arg("timeout_s") = 60.0, "the next tick's observations (a dict), or None once the match is over")
+      .def(
+          "act",
+          [](MatchClient& c, int tick, py::array_t<float, py::array::c_style | py::array::forcecast> actions) {
+            if (actions.ndim() != 2)
+              throw MatchError("BAD_ACTION", "actions must be a 2-d array (slots, action_size)");
+            std::vector<std::vector<float>> rows(actions.shape(0), std::vector<float>(actions.shape(1)));
+            auto view = actions.unchecked<2>();
+            for (py::ssize_t i = 0; i < actions.shape(0); ++i)
+              for (py::ssize_t k = 0; k < actions.shape(1); ++k) rows[i][k] = view(i, k);
+            c.act(tick, rows);
+          },
+          py::arg("tick"), py::arg("actions"))
+      .def(
+          "wait_result",
+          [](MatchClient& c, double timeout_s) {
+            olympics::match_result_t r;
+            {
+              py::gil_scoped_release release;
+              r = c.wait_result(timeout_s);
+            }
+            return result_dict(r);
+          },
+          py::arg("timeout_s") = 30.0);
+}

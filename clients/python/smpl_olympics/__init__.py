@@ -1,0 +1,14 @@
+"""SMPL Olympics: Python client for the humanoid sports match server.
+
+    from smpl_olympics import OlympicsParallelEnv
+    env = OlympicsParallelEnv(sport="sandbox", mode="1v1", slots=[0], request_id="my-match")
+    observations, infos = env.reset(seed=3)
+    while env.agents:
+        actions = {agent: policy(observations[agent]) for agent in env.agents}
+        observations, rewards, terminations, truncations, infos = env.step(actions)
+    print(env.result)
+"""
+from ._client import MatchClient, MatchError
+from .env import OlympicsParallelEnv
+
+__all__ = ["MatchClient", "MatchError", "OlympicsParallelEnv"]

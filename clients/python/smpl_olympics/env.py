@@ -1,0 +1,121 @@
+"""A PettingZoo-parallel-style environment over a real match on an olympics-server.
+
+Agents are named "slot_<k>" for the slots this client plays. reset() requests a match (or joins
+the one named by match_id) and returns the first observations; step() sends one action per live
+agent and returns the next tick's observations, rewards, terminations, truncations and infos, as
+PettingZoo's ParallelEnv does. Agents whose slot is done leave env.agents.
+"""
+import itertools
+import json
+import os
+
+import numpy as np
+
+from ._client import MatchClient
+
+
+class OlympicsParallelEnv:
+    metadata = {"name": "smpl_olympics", "render_modes": []}
+
+    def __init__(self, sport="sandbox", mode="1v1", slots=None, match_id=None, request_id=None,
+                 time_limit_s=0.0, realtime=False, lcm_url="", agent_name="python",
+                 policy_id="", policy_version="", server_id="", timeout_s=60.0):
+        self.sport, self.mode = sport, mode
+        self.slots = None if slots is None else sorted(slots)
+        self.match_id, self.request_id = match_id, request_id
+        self.time_limit_s, self.realtime, self.server_id = time_limit_s, realtime, server_id
+        self.timeout_s = timeout_s
+        self._client = MatchClient(lcm_url, agent_name, policy_id, policy_version)
+        self._episode = itertools.count()
+        self._tick = None
+        self.description = None
+        self.result = None
+        self.agents = []
+        self.possible_agents = []
+
+    # Spaces as shapes: gymnasium is optional.
+    def observation_size(self, agent=None):
+        return self.description["obs_size"]
+
+    def action_size(self, agent=None):
+        return self.description["action_size"]
+
+    def observation_space(self, agent):
+        return _box(self.description["obs_size"], 5.0)
+
+    def action_space(self, agent):
+        return _box(self.description["action_size"], 1.0)
+
+    def reset(self, seed=None, options=None):
+        """Start a new match: returns (observations, infos).
+
+        Without match_id, each reset requests a new match with request id "<request_id>-<n>"
+        (n = 0, 1, ... per reset), so an opponent process given the same id meets this env.
+        """
+        match_id, slots = self.match_id, self.slots
+        if match_id is None:
+            episode = next(self._episode)
+            base = self.request_id if self.request_id is not None else self._client.client_id
+            created = self._client.request_match(
+                self.sport, self.mode, seed or 0, self.time_limit_s, self.realtime,
+                f"{base}-{episode}", self.server_id, self.timeout_s)
+            match_id = created["match_id"]
+            if slots is None:
+                slots = list(range(created["num_slots"]))
+        elif slots is None:
+            raise ValueError("pass slots=[...] to join a match by its id")
+        self.description = self._client.join(match_id, slots, self.timeout_s)
+        self.possible_agents = [f"slot_{s}" for s in slots]
+        self.agents = list(self.possible_agents)
+        self.result = None
+        batch = self._client.next(self.timeout_s)
+        observations, _, _, _, infos = self._unpack(batch)
+        return observations, infos
+
+    def step(self, actions):
+        """One tick: actions maps each live agent to an array of action_size floats."""
+        size = self.description["action_size"]
+        rows = np.zeros((len(self.possible_agents), size), dtype=np.float32)
+        for i, agent in enumerate(self.possible_agents):
+            if agent in actions:
+                rows[i] = np.asarray(actions[agent], dtype=np.float32).reshape(size)
+        self._client.act(self._tick, rows)
+        batch = self._client.next(self.timeout_s)
+        if batch is None:  # the match ended without a final observation reaching us
+            self.result = self._client.wait_result(self.timeout_s)
+            ended = {a: True for a in self.agents}
+            self.agents = []
+            return {}, {}, ended, {a: False for a in ended}, {}
+        observations, rewards, terminations, truncations, infos = self._unpack(batch)
+        self.agents = [a for a in self.agents if not (terminations[a] or truncations[a])]
+        if not self.agents:
+            self.result = self._client.wait_result(self.timeout_s)
+            for a in infos:
+                infos[a]["result"] = self.result
+        return observations, rewards, terminations, truncations, infos
+
+    def close(self):
+        self.agents = []
+
+    def _unpack(self, batch):
+        self._tick = batch["tick"]
+        info = json.loads(batch["info"]) if batch["info"] else {}
+        observations, rewards, terminations, truncations, infos = {}, {}, {}, {}, {}
+        for i, slot in enumerate(batch["slots"]):
+            agent = f"slot_{slot}"
+            observations[agent] = batch["obs"][i]
+            rewards[agent] = float(batch["reward"][i])
+            truncations[agent] = bool(batch["truncated"][i])
+            terminations[agent] = bool(batch["done"][i]) and not truncations[agent]
+            infos[agent] = {"tick": batch["tick"],
+                            "reward_terms": dict(zip(batch["term_names"], batch["terms"][i].tolist())),
+                            "match": info}
+        return observations, rewards, terminations, truncations, infos
+
+
+def _box(size, bound):
+    try:
+        import gymnasium
+        return gymnasium.spaces.Box(-bound, bound, shape=(size,), dtype=np.float32)
+    except ImportError:
+        return (size,)

@@ -1,0 +1,87 @@
+"""The Python package against a real olympics-server and a real olympics-agent opponent."""
+import json
+import os
+import sqlite3
+import subprocess
+import tempfile
+import time
+import unittest
+
+import numpy as np
+
+from smpl_olympics import MatchError, OlympicsParallelEnv
+
+BIN = os.environ["OLYMPICS_BIN_DIR"]
+
+
+class EnvAgainstRealServer(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.mkdtemp(prefix="olympics-py-")
+        self.url = f"udpm://239.255.76.67:{21000 + os.getpid() % 9000}?ttl=0&recv_buf_size=4194304"
+        self.db = os.path.join(self.dir, "results.db")
+        self.log = open(os.path.join(self.dir, "server.log"), "w")
+        self.server = subprocess.Popen([f"{BIN}/olympics-server", "serve", "--lcm-url", self.url,
+                                        "--results", self.db, "--id", "py"],
+                                       stdout=self.log, stderr=subprocess.STDOUT)
+        time.sleep(0.3)
+
+    def tearDown(self):
+        self.server.kill()
+        self.server.wait()
+        self.log.close()
+
+    def test_plays_a_match_against_an_agent_process(self):
+        opponent = subprocess.Popen([f"{BIN}/olympics-agent", "--lcm-url", self.url, "--request-id",
+                                     "py-0", "--slots", "1", "--policy", "zero", "--name", "cpp",
+                                     "--json"], stdout=subprocess.PIPE, text=True)
+        env = OlympicsParallelEnv(sport="sandbox", mode="1v1", slots=[0], request_id="py",
+                                  lcm_url=self.url, agent_name="python")
+        observations, infos = env.reset(seed=4)
+        self.assertEqual(env.agents, ["slot_0"])
+        self.assertEqual(observations["slot_0"].shape, (366,))
+        self.assertEqual(observations["slot_0"].dtype, np.float32)
+        self.assertLessEqual(float(np.abs(observations["slot_0"]).max()), 5.0)
+        rng = np.random.default_rng(0)
+        steps, returns = 0, 0.0
+        while env.agents:
+            actions = {a: rng.uniform(-1, 1, 69) for a in env.agents}
+            observations, rewards, terminations, truncations, infos = env.step(actions)
+            steps += 1
+            returns += rewards.get("slot_0", 0.0)
+            if "slot_0" in infos:
+                self.assertEqual(set(infos["slot_0"]["reward_terms"]), {"alive", "fall"})
+        self.assertGreater(steps, 0)
+        self.assertIsNotNone(env.result)
+        out, _ = opponent.communicate(timeout=60)
+        self.assertEqual(opponent.returncode, 0)
+        printed = json.loads(out.strip().splitlines()[-1])
+        self.assertEqual(printed["match_id"], env.result["match_id"])
+        self.assertEqual(printed["ticks"], env.result["ticks"])
+        row = sqlite3.connect(self.db).execute(
+            "SELECT ticks, reason FROM matches WHERE match_id = ?", (env.result["match_id"],)).fetchone()
+        self.assertEqual(row, (env.result["ticks"], env.result["reason"]))
+        agents = sqlite3.connect(self.db).execute(
+            "SELECT agent FROM participants WHERE match_id = ? ORDER BY slot", (env.result["match_id"],)).fetchall()
+        self.assertEqual(agents, [("python",), ("cpp",)])
+
+    def test_owning_every_slot_needs_no_opponent_and_resets_to_new_matches(self):
+        env = OlympicsParallelEnv(sport="sandbox", mode="2v2", lcm_url=self.url, time_limit_s=1.0)
+        ids = set()
+        for episode in range(2):
+            observations, _ = env.reset(seed=episode)
+            self.assertEqual(sorted(observations), ["slot_0", "slot_1", "slot_2", "slot_3"])
+            while env.agents:
+                env.step({a: np.zeros(69, dtype=np.float32) for a in env.agents})
+            ids.add(env.result["match_id"])
+        self.assertEqual(len(ids), 2)
+
+    def test_errors_reach_python(self):
+        env = OlympicsParallelEnv(sport="curling", lcm_url=self.url)
+        with self.assertRaises(MatchError) as caught:
+            env.reset()
+        self.assertIn("UNKNOWN_SPORT", str(caught.exception))
+        self.assertIn("known sports: sandbox", str(caught.exception))
+
+
+if __name__ == "__main__":
+    unittest.main()
