@@ -3,14 +3,14 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "postgres_results_store.h"
 #include "sqlite_results_store.h"
 
 namespace olympics::server {
 
 std::unique_ptr<ResultsStore> open_results_store(const std::string& location) {
   if (location.rfind("postgresql://", 0) == 0 || location.rfind("postgres://", 0) == 0)
-    throw std::runtime_error(
-        "PostgreSQL results stores are not built into this server yet; use a SQLite file path");
+    return std::make_unique<PostgresResultsStore>(location);
   return std::make_unique<SqliteResultsStore>(location);
 }
 

@@ -73,8 +73,8 @@ PYBIND11_MODULE(_client, m) {
   py::register_exception<MatchError>(m, "MatchError", PyExc_RuntimeError);
 
   py::class_<MatchClient>(m, "MatchClient")
-      .def(py::init([](const std::string& lcm_url, const std::string& agent_name, const std::string& policy_id,
-                       const std::string& policy_version) {
+      .def(py::init([](const std::string& lcm_url, const std::string& agent_name,
+                       const std::string& policy_id, const std::string& policy_version) {
              ClientOptions o;
              o.lcm_url = lcm_url;
              o.agent_name = agent_name;
@@ -88,8 +88,8 @@ PYBIND11_MODULE(_client, m) {
       .def(
           "request_match",
           [](MatchClient& c, const std::string& sport, const std::string& mode, std::int64_t seed,
-             double time_limit_s, bool realtime, const std::string& request_id, const std::string& server_id,
-             double timeout_s) {
+             double time_limit_s, bool realtime, const std::string& request_id,
+             const std::string& server_id, double timeout_s) {
             MatchRequest r{sport, mode, seed, time_limit_s, realtime, request_id, server_id};
             olympics::match_created_t created;
             {
@@ -98,12 +98,13 @@ PYBIND11_MODULE(_client, m) {
             }
             return describe(created);
           },
-          py::arg("sport") = "sandbox", py::arg("mode") = "1v1", py::arg("seed") = 0, py::arg("time_limit_s") = 0.0,
-          py::arg("realtime") = false, py::arg("request_id") = "", py::arg("server_id") = "",
-          py::arg("timeout_s") = 10.0)
+          py::arg("sport") = "sandbox", py::arg("mode") = "1v1", py::arg("seed") = 0,
+          py::arg("time_limit_s") = 0.0, py::arg("realtime") = false, py::arg("request_id") = "",
+          py::arg("server_id") = "", py::arg("timeout_s") = 10.0)
       .def(
           "join",
-          [](MatchClient& c, const std::string& match_id, const std::vector<int>& slots, double timeout_s) {
+          [](MatchClient& c, const std::string& match_id, const std::vector<int>& slots,
+             double timeout_s) {
             olympics::match_created_t joined;
             {
               py::gil_scoped_release release;
@@ -122,13 +123,16 @@ PYBIND11_MODULE(_client, m) {
             }
             return observation_dict(o);
           },
-          py::arg("timeout_s") = 60.0, "the next tick's observations (a dict), or None once the match is over")
+          py::arg("timeout_s") = 60.0,
+          "the next tick's observations (a dict), or None once the match is over")
       .def(
           "act",
-          [](MatchClient& c, int tick, py::array_t<float, py::array::c_style | py::array::forcecast> actions) {
+          [](MatchClient& c, int tick,
+             py::array_t<float, py::array::c_style | py::array::forcecast> actions) {
             if (actions.ndim() != 2)
               throw MatchError("BAD_ACTION", "actions must be a 2-d array (slots, action_size)");
-            std::vector<std::vector<float>> rows(actions.shape(0), std::vector<float>(actions.shape(1)));
+            std::vector<std::vector<float>> rows(actions.shape(0),
+                                                 std::vector<float>(actions.shape(1)));
             auto view = actions.unchecked<2>();
             for (py::ssize_t i = 0; i < actions.shape(0); ++i)
               for (py::ssize_t k = 0; k < actions.shape(1); ++k) rows[i][k] = view(i, k);

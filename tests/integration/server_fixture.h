@@ -17,15 +17,17 @@ namespace olympics::testing {
 
 class ServerFixture {
  public:
+  // `results`: "" = a SQLite file in the test's folder, else a path or postgresql:// URL.
   explicit ServerFixture(std::vector<std::string> extra_args = {},
-                         std::string url = unique_lcm_url())
+                         std::string url = unique_lcm_url(), std::string results = "")
       : url_(std::move(url)), dir_(temp_dir()) {
+    if (results.empty()) results = results_path();
     std::vector<std::string> argv = {program("olympics-server"),
                                      "serve",
                                      "--lcm-url",
                                      url_,
                                      "--results",
-                                     results_path(),
+                                     results,
                                      "--replay-dir",
                                      dir_ + "/replays",
                                      "--id",

@@ -1,0 +1,114 @@
+#include "postgres_results_store.h"
+
+#include <memory>
+#include <regex>
+#include <stdexcept>
+
+#include "results_schema.h"
+
+namespace olympics::server {
+
+// A PGresult that clears itself, with the checks every call needs.
+struct PostgresResultsStore::Result {
+  std::unique_ptr<PGresult, decltype(&PQclear)> r{nullptr, &PQclear};
+  int rows() const { return PQntuples(r.get()); }
+  std::string text(int row, int col) const { return PQgetvalue(r.get(), row, col); }
+  std::int64_t integer(int row, int col) const { return std::stoll(text(row, col)); }
+  double real(int row, int col) const { return std::stod(text(row, col)); }
+};
+
+PostgresResultsStore::PostgresResultsStore(const std::string& url)
+    : shown_url_(std::regex_replace(url, std::regex(":[^:@/]*@"), ":***@")) {
+  conn_ = PQconnectdb(url.c_str());
+  if (PQstatus(conn_) != CONNECTION_OK) {
+    std::string why = PQerrorMessage(conn_);
+    PQfinish(conn_);
+    throw std::runtime_error("cannot connect to results database " + shown_url_ + ": " + why +
+                             "(check the URL, that the server runs and that the role may log in)");
+  }
+  exec("SET client_min_messages TO WARNING");  // quiet "already exists" notices
+  exec(kResultsSchema);
+}
+
+PostgresResultsStore::~PostgresResultsStore() { PQfinish(conn_); }
+
+PostgresResultsStore::Result PostgresResultsStore::exec(const std::string& sql,
+                                                        const std::vector<std::string>& params) {
+  std::vector<const char*> values;
+  for (const auto& p : params) values.push_back(p.c_str());
+  Result res;
+  if (params.empty())
+    res.r.reset(PQexec(conn_, sql.c_str()));
+  else
+    res.r.reset(PQexecParams(conn_, sql.c_str(), static_cast<int>(values.size()), nullptr,
+                             values.data(), nullptr, nullptr, 0));
+  auto status = PQresultStatus(res.r.get());
+  if (status != PGRES_COMMAND_OK && status != PGRES_TUPLES_OK)
+    throw std::runtime_error("results store " + shown_url_ + ": " + PQerrorMessage(conn_));
+  return res;
+}
+
+void PostgresResultsStore::record(const StoredMatch& m) {
+  std::lock_guard lock(mutex_);
+  exec("BEGIN");
+  try {
+    exec("INSERT INTO matches VALUES ($1,$2,$3,$4,$5,$6,$7,$8,$9,$10,$11,$12,$13,$14)",
+         {m.match_id, m.server_id, m.server_version, m.sport, m.mode, std::to_string(m.seed),
+          std::to_string(m.realtime ? 1 : 0), std::to_string(m.ticks),
+          std::to_string(m.wall_time_s), m.reason, std::to_string(m.winner_team),
+          scores_to_text(m.scores), m.info, std::to_string(m.finished_at_unix)});
+    for (const auto& p : m.participants)
+      exec("INSERT INTO participants VALUES ($1,$2,$3,$4,$5,$6)",
+           {m.match_id, std::to_string(p.slot), std::to_string(p.team), p.agent, p.policy,
+            p.policy_version});
+    exec("COMMIT");
+  } catch (...) {
+    exec("ROLLBACK");
+    throw;
+  }
+}
+
+std::vector<StoredMatch> PostgresResultsStore::query_matches(const std::string& where,
+                                                             const std::vector<std::string>& params,
+                                                             int limit) {
+  std::lock_guard lock(mutex_);
+  Result q = exec(
+      "SELECT match_id, server_id, server_version, sport, mode, seed, realtime, ticks, "
+      "wall_time_s, "
+      "reason, winner_team, scores, info, finished_at_unix FROM matches " +
+          where + " ORDER BY finished_at_unix DESC, match_id DESC LIMIT " + std::to_string(limit),
+      params);
+  std::vector<StoredMatch> out;
+  for (int i = 0; i < q.rows(); ++i) {
+    StoredMatch m;
+    m.match_id = q.text(i, 0), m.server_id = q.text(i, 1), m.server_version = q.text(i, 2);
+    m.sport = q.text(i, 3), m.mode = q.text(i, 4), m.seed = q.integer(i, 5);
+    m.realtime = q.integer(i, 6) != 0, m.ticks = static_cast<int>(q.integer(i, 7));
+    m.wall_time_s = q.real(i, 8), m.reason = q.text(i, 9);
+    m.winner_team = static_cast<int>(q.integer(i, 10)), m.scores = scores_from_text(q.text(i, 11));
+    m.info = q.text(i, 12), m.finished_at_unix = q.integer(i, 13);
+    Result p = exec(
+        "SELECT slot, team, agent, policy, policy_version FROM participants WHERE match_id = $1 "
+        "ORDER BY slot",
+        {m.match_id});
+    for (int k = 0; k < p.rows(); ++k)
+      m.participants.push_back({static_cast<int>(p.integer(k, 0)),
+                                static_cast<int>(p.integer(k, 1)), p.text(k, 2), p.text(k, 3),
+                                p.text(k, 4)});
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+std::vector<StoredMatch> PostgresResultsStore::recent(int limit, const std::string& sport) {
+  if (sport.empty()) return query_matches("", {}, limit);
+  return query_matches("WHERE sport = $1", {sport}, limit);
+}
+
+std::optional<StoredMatch> PostgresResultsStore::find(const std::string& match_id) {
+  auto rows = query_matches("WHERE match_id = $1", {match_id}, 1);
+  if (rows.empty()) return std::nullopt;
+  return rows.front();
+}
+
+}  // namespace olympics::server
