@@ -166,6 +166,8 @@ int main(int argc, char** argv) {
   serve_cmd->add_option("--resend-ms", resend_ms, "sync: republish interval while waiting");
   serve_cmd->add_option("--silent-timeout-s", silent_s, "forfeit a client silent this long");
   serve_cmd->add_option("--join-timeout-s", join_s, "cancel a match not full after this long");
+  bool dry_run = false;
+  serve_cmd->add_flag("--dry-run", dry_run, "check the config, print the settings, exit");
   serve_cmd->add_option("--drop-rate", config.transport.drop_rate,
                         "TEST ONLY: drop this share of sent datagrams");
   serve_cmd->add_option("--drop-seed", config.transport.drop_seed, "TEST ONLY: seed of the drops");
@@ -217,6 +219,20 @@ int main(int argc, char** argv) {
         if (join_s > 0) r->join_timeout_s = join_s;
       }
       if (missed > 0) config.host.sync.max_missed_ticks = missed;
+      if (dry_run) {
+        std::printf("config ok: id %s, lcm %s, capacity %d, workers %d, results %s, replays %s\n"
+                    "sync: deadline %.0f ms, %d missed ticks, resend %.0f ms, silent %.1f s, join %.0f s\n"
+                    "realtime: %d missed ticks, silent %.1f s\n",
+                    config.host.server_id.c_str(),
+                    config.transport.url.empty() ? "(default)" : config.transport.url.c_str(),
+                    config.host.capacity, config.host.workers, config.results.c_str(),
+                    config.host.replay_dir.empty() ? "(none)" : config.host.replay_dir.c_str(),
+                    config.host.sync.action_deadline_s * 1000, config.host.sync.max_missed_ticks,
+                    config.host.sync.resend_interval_s * 1000, config.host.sync.silent_timeout_s,
+                    config.host.sync.join_timeout_s, config.host.realtime.max_missed_ticks,
+                    config.host.realtime.silent_timeout_s);
+        return 0;
+      }
       return serve(config);
     }
     if (app.got_subcommand("sports")) {
