@@ -220,17 +220,18 @@ int main(int argc, char** argv) {
       }
       if (missed > 0) config.host.sync.max_missed_ticks = missed;
       if (dry_run) {
-        std::printf("config ok: id %s, lcm %s, capacity %d, workers %d, results %s, replays %s\n"
-                    "sync: deadline %.0f ms, %d missed ticks, resend %.0f ms, silent %.1f s, join %.0f s\n"
-                    "realtime: %d missed ticks, silent %.1f s\n",
-                    config.host.server_id.c_str(),
-                    config.transport.url.empty() ? "(default)" : config.transport.url.c_str(),
-                    config.host.capacity, config.host.workers, config.results.c_str(),
-                    config.host.replay_dir.empty() ? "(none)" : config.host.replay_dir.c_str(),
-                    config.host.sync.action_deadline_s * 1000, config.host.sync.max_missed_ticks,
-                    config.host.sync.resend_interval_s * 1000, config.host.sync.silent_timeout_s,
-                    config.host.sync.join_timeout_s, config.host.realtime.max_missed_ticks,
-                    config.host.realtime.silent_timeout_s);
+        std::printf(
+            "config ok: id %s, lcm %s, capacity %d, workers %d, results %s, replays %s\n"
+            "sync: deadline %.0f ms, %d missed ticks, resend %.0f ms, silent %.1f s, join %.0f s\n"
+            "realtime: %d missed ticks, silent %.1f s\n",
+            config.host.server_id.c_str(),
+            config.transport.url.empty() ? "(default)" : config.transport.url.c_str(),
+            config.host.capacity, config.host.workers, config.results.c_str(),
+            config.host.replay_dir.empty() ? "(none)" : config.host.replay_dir.c_str(),
+            config.host.sync.action_deadline_s * 1000, config.host.sync.max_missed_ticks,
+            config.host.sync.resend_interval_s * 1000, config.host.sync.silent_timeout_s,
+            config.host.sync.join_timeout_s, config.host.realtime.max_missed_ticks,
+            config.host.realtime.silent_timeout_s);
         return 0;
       }
       return serve(config);

@@ -85,6 +85,12 @@ bool MatchRuntime::still_playing(const Client& k) const {
   return false;
 }
 
+std::vector<int> MatchRuntime::all_clients() const {
+  std::vector<int> all(clients_.size());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  return all;
+}
+
 int MatchRuntime::client_index(const std::string& client_id) const {
   for (size_t i = 0; i < clients_.size(); ++i)
     if (clients_[i].id == client_id) return static_cast<int>(i);
@@ -211,9 +217,7 @@ void MatchRuntime::start(Clock::time_point now) {
   resend_gap_s_ = settings_.resend_interval_s;
   next_resend_ = now + seconds(resend_gap_s_);
   next_realtime_tick_ = now + seconds(kRealtimePeriod);
-  std::vector<int> all(clients_.size());
-  for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-  publish_observations(all);
+  publish_observations(all_clients());
 }
 
 void MatchRuntime::on_heartbeat(const olympics::heartbeat_t& beat, Clock::time_point now) {
@@ -327,9 +331,7 @@ void MatchRuntime::advance(Clock::time_point now) {
   tick_deadline_ = now + seconds(settings_.action_deadline_s);
   resend_gap_s_ = settings_.resend_interval_s;
   next_resend_ = now + seconds(resend_gap_s_);
-  std::vector<int> all(clients_.size());
-  for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-  publish_observations(all);
+  publish_observations(all_clients());
   if (game_->outcome().match_over) finish(now);
 }
 
@@ -374,9 +376,7 @@ void MatchRuntime::forfeit(int client, const std::string& why, Clock::time_point
   std::fprintf(stderr, "[%s] %s\n", identity_.match_id.c_str(), reason.c_str());
   forfeit_ = nlohmann::json{{"tick", game_->tick()}, {"team", team}, {"reason", reason}};
   game_->forfeit(team, reason);
-  std::vector<int> all(clients_.size());
-  for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-  publish_observations(all);
+  publish_observations(all_clients());
   finish(now);
 }
 

@@ -89,6 +89,7 @@ class MatchRuntime {
   void error(const std::string& client_id, const std::string& code, const std::string& message);
   int client_index(const std::string& client_id) const;
   bool still_playing(const Client& k) const;
+  std::vector<int> all_clients() const;
   template <typename Msg>
   void send(const std::string& channel, const Msg& msg);
 

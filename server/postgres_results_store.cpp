@@ -12,10 +12,18 @@ namespace olympics::server {
 struct PostgresResultsStore::Result {
   std::unique_ptr<PGresult, decltype(&PQclear)> r{nullptr, &PQclear};
   int rows() const { return PQntuples(r.get()); }
-  std::string text(int row, int col) const { return PQgetvalue(r.get(), row, col); }
-  std::int64_t integer(int row, int col) const { return std::stoll(text(row, col)); }
-  double real(int row, int col) const { return std::stod(text(row, col)); }
 };
+
+namespace {
+// One row of a result, in the shape match_from_row() reads.
+struct RowView {
+  PGresult* r;
+  int row;
+  std::string text(int col) const { return PQgetvalue(r, row, col); }
+  std::int64_t integer(int col) const { return std::stoll(text(col)); }
+  double real(int col) const { return std::stod(text(col)); }
+};
+}  // namespace
 
 PostgresResultsStore::PostgresResultsStore(const std::string& url)
     : shown_url_(std::regex_replace(url, std::regex(":[^:@/]*@"), ":***@")) {
@@ -68,47 +76,23 @@ void PostgresResultsStore::record(const StoredMatch& m) {
   }
 }
 
-std::vector<StoredMatch> PostgresResultsStore::query_matches(const std::string& where,
-                                                             const std::vector<std::string>& params,
-                                                             int limit) {
+std::vector<StoredMatch> PostgresResultsStore::select(const std::string& column,
+                                                      const std::string& value, int limit) {
   std::lock_guard lock(mutex_);
-  Result q = exec(
-      "SELECT match_id, server_id, server_version, sport, mode, seed, realtime, ticks, "
-      "wall_time_s, "
-      "reason, winner_team, scores, info, finished_at_unix FROM matches " +
-          where + " ORDER BY finished_at_unix DESC, match_id DESC LIMIT " + std::to_string(limit),
-      params);
+  const std::string where = column.empty() ? "" : "WHERE " + column + " = $1";
+  Result q = exec(kSelectMatches + where + " ORDER BY finished_at_unix DESC, match_id DESC LIMIT " +
+                      std::to_string(limit),
+                  column.empty() ? std::vector<std::string>{} : std::vector<std::string>{value});
   std::vector<StoredMatch> out;
   for (int i = 0; i < q.rows(); ++i) {
-    StoredMatch m;
-    m.match_id = q.text(i, 0), m.server_id = q.text(i, 1), m.server_version = q.text(i, 2);
-    m.sport = q.text(i, 3), m.mode = q.text(i, 4), m.seed = q.integer(i, 5);
-    m.realtime = q.integer(i, 6) != 0, m.ticks = static_cast<int>(q.integer(i, 7));
-    m.wall_time_s = q.real(i, 8), m.reason = q.text(i, 9);
-    m.winner_team = static_cast<int>(q.integer(i, 10)), m.scores = scores_from_text(q.text(i, 11));
-    m.info = q.text(i, 12), m.finished_at_unix = q.integer(i, 13);
-    Result p = exec(
-        "SELECT slot, team, agent, policy, policy_version FROM participants WHERE match_id = $1 "
-        "ORDER BY slot",
-        {m.match_id});
+    StoredMatch m = match_from_row(RowView{q.r.get(), i});
+    Result p =
+        exec(std::string(kSelectParticipants) + "WHERE match_id = $1 ORDER BY slot", {m.match_id});
     for (int k = 0; k < p.rows(); ++k)
-      m.participants.push_back({static_cast<int>(p.integer(k, 0)),
-                                static_cast<int>(p.integer(k, 1)), p.text(k, 2), p.text(k, 3),
-                                p.text(k, 4)});
+      m.participants.push_back(participant_from_row(RowView{p.r.get(), k}));
     out.push_back(std::move(m));
   }
   return out;
-}
-
-std::vector<StoredMatch> PostgresResultsStore::recent(int limit, const std::string& sport) {
-  if (sport.empty()) return query_matches("", {}, limit);
-  return query_matches("WHERE sport = $1", {sport}, limit);
-}
-
-std::optional<StoredMatch> PostgresResultsStore::find(const std::string& match_id) {
-  auto rows = query_matches("WHERE match_id = $1", {match_id}, 1);
-  if (rows.empty()) return std::nullopt;
-  return rows.front();
 }
 
 }  // namespace olympics::server

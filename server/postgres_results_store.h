@@ -13,15 +13,13 @@ class PostgresResultsStore : public ResultsStore {
   explicit PostgresResultsStore(const std::string& url);
   ~PostgresResultsStore() override;
   void record(const StoredMatch& match) override;
-  std::vector<StoredMatch> recent(int limit, const std::string& sport) override;
-  std::optional<StoredMatch> find(const std::string& match_id) override;
   std::string describe() const override { return shown_url_; }
 
  private:
   struct Result;
   Result exec(const std::string& sql, const std::vector<std::string>& params = {});
-  std::vector<StoredMatch> query_matches(const std::string& where,
-                                         const std::vector<std::string>& params, int limit);
+  std::vector<StoredMatch> select(const std::string& column, const std::string& value,
+                                  int limit) override;
   std::string shown_url_;  // without the password
   PGconn* conn_ = nullptr;
   std::mutex mutex_;

@@ -14,6 +14,16 @@ std::unique_ptr<ResultsStore> open_results_store(const std::string& location) {
   return std::make_unique<SqliteResultsStore>(location);
 }
 
+std::vector<StoredMatch> ResultsStore::recent(int limit, const std::string& sport) {
+  return select(sport.empty() ? "" : "sport", sport, limit);
+}
+
+std::optional<StoredMatch> ResultsStore::find(const std::string& match_id) {
+  auto rows = select("match_id", match_id, 1);
+  if (rows.empty()) return std::nullopt;
+  return rows.front();
+}
+
 std::string scores_to_text(const std::vector<double>& scores) {
   std::ostringstream out;
   out.precision(17);

@@ -42,9 +42,15 @@ class ResultsStore {
   // Writes one match and its participants atomically; a match id already stored is an error.
   virtual void record(const StoredMatch& match) = 0;
   // Most recent first; `sport` empty = all sports.
-  virtual std::vector<StoredMatch> recent(int limit, const std::string& sport = "") = 0;
-  virtual std::optional<StoredMatch> find(const std::string& match_id) = 0;
+  std::vector<StoredMatch> recent(int limit, const std::string& sport = "");
+  std::optional<StoredMatch> find(const std::string& match_id);
   virtual std::string describe() const = 0;  // "sqlite:/path" or the URL without password
+
+ protected:
+  // Matches (with participants), newest first, where `column` equals `value` (no filter when
+  // column is empty). Column names come from this class only, never from users.
+  virtual std::vector<StoredMatch> select(const std::string& column, const std::string& value,
+                                          int limit) = 0;
 };
 
 // "postgresql://..." or "postgres://..." -> PostgreSQL; anything else is a SQLite file path.

@@ -108,47 +108,21 @@ void SqliteResultsStore::record(const StoredMatch& m) {
   }
 }
 
-std::vector<StoredMatch> SqliteResultsStore::query_matches(const std::string& where,
-                                                           const std::vector<std::string>& args,
-                                                           int limit) {
+std::vector<StoredMatch> SqliteResultsStore::select(const std::string& column,
+                                                    const std::string& value, int limit) {
   std::lock_guard lock(mutex_);
-  Statement q(db_,
-              "SELECT match_id, server_id, server_version, sport, mode, seed, realtime, ticks, "
-              "wall_time_s, reason, winner_team, scores, info, finished_at_unix FROM matches " +
-                  where + " ORDER BY finished_at_unix DESC, rowid DESC LIMIT " +
-                  std::to_string(limit));
-  for (size_t i = 0; i < args.size(); ++i) q.bind(static_cast<int>(i) + 1, args[i]);
+  const std::string where = column.empty() ? "" : "WHERE " + column + " = ?1";
+  Statement q(db_, kSelectMatches + where + " ORDER BY finished_at_unix DESC, rowid DESC LIMIT " +
+                       std::to_string(limit));
+  if (!column.empty()) q.bind(1, value);
   std::vector<StoredMatch> out;
-  while (q.step()) {
-    StoredMatch m;
-    m.match_id = q.text(0), m.server_id = q.text(1), m.server_version = q.text(2);
-    m.sport = q.text(3), m.mode = q.text(4), m.seed = q.integer(5), m.realtime = q.integer(6) != 0;
-    m.ticks = static_cast<int>(q.integer(7)), m.wall_time_s = q.real(8), m.reason = q.text(9);
-    m.winner_team = static_cast<int>(q.integer(10)), m.scores = scores_from_text(q.text(11));
-    m.info = q.text(12), m.finished_at_unix = q.integer(13);
-    out.push_back(std::move(m));
-  }
+  while (q.step()) out.push_back(match_from_row(q));
   for (auto& m : out) {
-    Statement p(db_,
-                "SELECT slot, team, agent, policy, policy_version FROM participants "
-                "WHERE match_id = ?1 ORDER BY slot");
+    Statement p(db_, std::string(kSelectParticipants) + "WHERE match_id = ?1 ORDER BY slot");
     p.bind(1, m.match_id);
-    while (p.step())
-      m.participants.push_back({static_cast<int>(p.integer(0)), static_cast<int>(p.integer(1)),
-                                p.text(2), p.text(3), p.text(4)});
+    while (p.step()) m.participants.push_back(participant_from_row(p));
   }
   return out;
-}
-
-std::vector<StoredMatch> SqliteResultsStore::recent(int limit, const std::string& sport) {
-  if (sport.empty()) return query_matches("", {}, limit);
-  return query_matches("WHERE sport = ?1", {sport}, limit);
-}
-
-std::optional<StoredMatch> SqliteResultsStore::find(const std::string& match_id) {
-  auto rows = query_matches("WHERE match_id = ?1", {match_id}, 1);
-  if (rows.empty()) return std::nullopt;
-  return rows.front();
 }
 
 }  // namespace olympics::server

@@ -133,25 +133,8 @@ def write_mjcf(path, model_name, bodies, armature, excludes, note):
     print(f"wrote {path} ({len(bodies)} bodies, {3 * (len(bodies) - 1)} hinges)")
 
 
-def smpl_bodies(markdown):
-    bodies = []
-    for cells in table_rows(markdown, "Body"):
-        name = cells[0].split()[0]
-        gains = cells[6]
-        limit = 720.0 if ("Shoulder" in name or "Elbow" in name) else 180.0
-        bodies.append({
-            "name": name,
-            "parent": cells[1].replace("–", "-"),
-            "pos": vec(cells[2]),
-            "geom": parse_geom(cells[3]),
-            "density": num(cells[4]),
-            "gains": [num(g) for g in gains.split("/")] if "/" in gains else None,
-            "range": {axis: limit for axis in "xyz"},
-        })
-    return bodies
-
-
-def smplx_bodies(markdown):
+def table_bodies(markdown, ranges):
+    """Bodies of a HUMANOID table; ranges(name, cells) gives each body's hinge ranges."""
     bodies = []
     for cells in table_rows(markdown, "Body"):
         name = cells[0].split()[0]
@@ -163,9 +146,18 @@ def smplx_bodies(markdown):
             "geom": parse_geom(cells[3]),
             "density": num(cells[4]),
             "gains": [num(g) for g in gains.split("/")[:2]] if "/" in gains else None,
-            "range": parse_ranges(cells[7]) if cells[7] not in ("–", "-") else None,
+            "range": ranges(name, cells),
         })
     return bodies
+
+
+def smpl_runtime_ranges(name, cells):
+    limit = 720.0 if ("Shoulder" in name or "Elbow" in name) else 180.0
+    return {axis: limit for axis in "xyz"}
+
+
+def smplx_table_ranges(name, cells):
+    return parse_ranges(cells[7]) if cells[7] not in ("–", "-") else None
 
 
 # Pairs that must not collide although their bodies are not parent and child. The SMPL-X list is
@@ -183,8 +175,8 @@ SMPL_EXCLUDES = [("Torso", "Chest"), ("Head", "Chest"), ("L_Shoulder", "Chest"),
 def main():
     shared = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "../shared")
     out = pathlib.Path(__file__).resolve().parent
-    smpl = smpl_bodies((shared / "HUMANOID.md").read_text())
-    smplx = smplx_bodies((shared / "HUMANOID-SMPLX.md").read_text())
+    smpl = table_bodies((shared / "HUMANOID.md").read_text(), smpl_runtime_ranges)
+    smplx = table_bodies((shared / "HUMANOID-SMPLX.md").read_text(), smplx_table_ranges)
     assert len(smpl) == 24 and len(smplx) == 52, (len(smpl), len(smplx))
     write_mjcf(out / "smpl_humanoid.xml", "smpl_humanoid", smpl, 0.02, SMPL_EXCLUDES,
                "SMPL neutral mean shape: 24 bodies, 69 hinge DoF, gains from GAINS_PHC")
