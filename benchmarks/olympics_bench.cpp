@@ -31,6 +31,8 @@ int main(int argc, char** argv) {
   serv->add_option("--matches", server.matches, "concurrent matches")->check(CLI::PositiveNumber);
   serv->add_option("--workers", server.workers, "server worker threads")
       ->check(CLI::PositiveNumber);
+  bool no_pin = false;
+  serv->add_flag("--no-pin", no_pin, "let the OS place the server's workers");
   CLI11_PARSE(app, argc, argv);
 
   if (*phys) {
@@ -42,6 +44,7 @@ int main(int argc, char** argv) {
       olympics::bench::print_physics_report(report);
   }
   if (*serv) {
+    server.pin = !no_pin;
     auto report = olympics::bench::run_server_bench(server);
     if (json)
       std::printf("%s\n", report.dump(2).c_str());

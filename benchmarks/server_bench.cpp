@@ -1,5 +1,7 @@
 #include "server_bench.h"
 
+#include <pthread.h>
+#include <sched.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -44,6 +46,14 @@ double bare_ticks_per_second(int matches, double seconds) {
   return ticks / elapsed;
 }
 
+// Restricts the calling thread (and threads it starts later) to CPUs [first, last].
+void pin_this_thread(int first, int last) {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  for (int c = first; c <= last; ++c) CPU_SET(c, &set);
+  pthread_setaffinity_np(pthread_self(), sizeof set, &set);
+}
+
 double percentile(std::vector<double> v, double p) {
   if (v.empty()) return 0;
   std::sort(v.begin(), v.end());
@@ -59,12 +69,20 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
   int fd = mkstemp(db);
   close(fd);
   server::SqliteResultsStore store(db);
+  // With --pin, the server's workers get cores 0..workers-1 to themselves and everything else
+  // (clients, LCM threads, the server's receive loop) shares the rest, so "per worker" means
+  // per core, as for the bare figure.
+  const int cores = static_cast<int>(std::thread::hardware_concurrency());
+  const bool pin = o.pin && cores > o.workers;
+  if (pin) pin_this_thread(o.workers, cores - 1);
   protocol::Transport server_transport({url});
   server::HostSettings settings;
   settings.server_id = "bench";
   settings.workers = o.workers;
   settings.capacity = o.matches * 4;
+  if (pin) pin_this_thread(0, o.workers - 1);
   server::MatchHost host(settings, server_transport, store);
+  if (pin) pin_this_thread(o.workers, cores - 1);
   std::atomic<bool> stop_server{false};
   std::thread server_thread([&] { host.run(stop_server); });
 
@@ -109,6 +127,7 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
   stop_server = true;
   server_thread.join();
   std::remove(db);
+  if (pin) pin_this_thread(0, 0);  // the bare figure: one core
 
   std::vector<double> all;
   for (auto& r : round_trips) all.insert(all.end(), r.begin(), r.end());
@@ -117,6 +136,7 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
   return {{"scene", "sandbox 1v1 (2 SMPL humanoids), zero actions, sync mode"},
           {"matches", o.matches},
           {"server_workers", o.workers},
+          {"workers_pinned", pin},
           {"served_ticks_per_s", served},
           {"served_ticks_per_s_per_worker", served / o.workers},
           {"bare_physics_ticks_per_s", bare},
@@ -127,9 +147,10 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
 }
 
 void print_server_report(const nlohmann::json& r) {
-  std::printf("server: %s, %d matches at once, %d server worker(s)\n",
+  std::printf("server: %s, %d matches at once, %d server worker(s)%s\n",
               r["scene"].get<std::string>().c_str(), r["matches"].get<int>(),
-              r["server_workers"].get<int>());
+              r["server_workers"].get<int>(),
+              r["workers_pinned"].get<bool>() ? ", pinned to cores of their own" : "");
   std::printf("  served           %8.0f ticks/s (%.0f per worker)\n",
               r["served_ticks_per_s"].get<double>(),
               r["served_ticks_per_s_per_worker"].get<double>());

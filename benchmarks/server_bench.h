@@ -7,8 +7,9 @@ namespace olympics::bench {
 
 struct ServerBenchOptions {
   double seconds = 3.0;  // wall time per measurement
-  int matches = 4;       // concurrent matches, one client each (both slots)
+  int matches = 8;       // concurrent matches, one client each (both slots)
   int workers = 1;       // server threads: 1 = "per core"
+  bool pin = true;       // workers alone on their cores, everything else on the others
 };
 
 nlohmann::json run_server_bench(const ServerBenchOptions& options);
