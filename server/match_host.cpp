@@ -1,5 +1,8 @@
 #include "match_host.h"
 
+#include <pthread.h>
+#include <time.h>
+
 #include <cstdio>
 #include <filesystem>
 
@@ -35,6 +38,18 @@ MatchHost::~MatchHost() {
     w->wake.notify_all();
     w->thread.join();
   }
+}
+
+double MatchHost::worker_cpu_seconds() const {
+  double total = 0;
+  for (const auto& w : workers_) {
+    clockid_t clock;
+    timespec t{};
+    if (pthread_getcpuclockid(const_cast<std::thread&>(w->thread).native_handle(), &clock) == 0 &&
+        clock_gettime(clock, &t) == 0)
+      total += t.tv_sec + t.tv_nsec * 1e-9;
+  }
+  return total;
 }
 
 int MatchHost::active_matches() const {

@@ -42,6 +42,8 @@ class MatchHost {
   // Serves until `stop` becomes true.
   void run(const std::atomic<bool>& stop);
   int active_matches() const;
+  // CPU time the worker threads have used so far (all of them together).
+  double worker_cpu_seconds() const;
   long finished_matches() const { return finished_count_; }
 
  private:
