@@ -1,0 +1,34 @@
+// Ratings: Weng-Lin (the Bradley-Terry "full pairing" model that OpenSkill implements) for teams
+// of any size and draws, and Elo for 1v1 reports.
+#pragma once
+
+#include <vector>
+
+namespace olympics::selfplay {
+
+struct SkillRating {
+  double mu = 25.0;
+  double sigma = 25.0 / 3.0;
+  // A conservative single number for tables: mu - 3 sigma.
+  double ordinal() const { return mu - 3.0 * sigma; }
+};
+
+struct WengLinSettings {
+  double beta = 25.0 / 6.0;  // performance spread; OpenSkill's default sigma / 2
+  double kappa = 1e-4;       // floor of the variance shrink factor
+};
+
+// Updates every player's rating after one match. teams[i] lists team i's players; rank[i] is team
+// i's place (lower is better, equal ranks draw). Weng & Lin (2011), Algorithm 1 with the
+// Bradley-Terry full-pairing model and gamma = sigma_i / c_iq, as OpenSkill does.
+std::vector<std::vector<SkillRating>> rate_match(const std::vector<std::vector<SkillRating>>& teams,
+                                                 const std::vector<int>& rank,
+                                                 const WengLinSettings& settings = {});
+
+// Elo after one 1v1 game: score_a is 1 (a won), 0.5 (draw) or 0 (a lost).
+struct EloPair {
+  double a, b;
+};
+EloPair elo_update(double rating_a, double rating_b, double score_a, double k = 32.0);
+
+}  // namespace olympics::selfplay
