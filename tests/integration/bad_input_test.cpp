@@ -218,8 +218,8 @@ TEST(BadInput, BadConfigFileNamesFileLineAndProblem) {
 TEST(Config, TheExampleConfigLoadsAndFlagsOverrideIt) {
   std::string dir = temp_dir();
   Process p({program("olympics-server"), "serve", "--config",
-             std::string(OLYMPICS_SOURCE_DIR) + "/deploy/olympics-server.example.toml", "--capacity",
-             "7", "--dry-run"},
+             std::string(OLYMPICS_SOURCE_DIR) + "/deploy/olympics-server.example.toml",
+             "--capacity", "7", "--dry-run"},
             dir + "/out.log");
   EXPECT_EQ(p.wait(10), 0) << p.output();
   EXPECT_NE(p.output().find("config ok: id server-a"), std::string::npos) << p.output();

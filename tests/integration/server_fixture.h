@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "process.h"
 #include "replay.h"
 #include "sqlite_results_store.h"
+#include "test_programs.h"
 
 namespace olympics::testing {
 
@@ -19,7 +19,8 @@ class ServerFixture {
  public:
   // `results`: "" = a SQLite file in the test's folder, else a path or postgresql:// URL.
   explicit ServerFixture(std::vector<std::string> extra_args = {},
-                         std::string url = unique_lcm_url(), std::string results = "")
+                         std::string url = unique_lcm_url(), std::string results = "",
+                         std::string id = "srv")
       : url_(std::move(url)), dir_(temp_dir()) {
     if (results.empty()) results = results_path();
     std::vector<std::string> argv = {program("olympics-server"),
@@ -31,7 +32,7 @@ class ServerFixture {
                                      "--replay-dir",
                                      dir_ + "/replays",
                                      "--id",
-                                     "srv"};
+                                     id};
     argv.insert(argv.end(), extra_args.begin(), extra_args.end());
     server_ = std::make_unique<Process>(argv, dir_ + "/server.log");
     if (!server_->wait_for_output("olympics-server", 10))

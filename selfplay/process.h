@@ -1,4 +1,5 @@
-// Real processes for integration tests: start a program, read what it printed, wait, kill.
+// Child processes: start a program with its output in a file, wait, signal, read the output.
+// The league starts its policy workers with it; the integration tests their servers and agents.
 #pragma once
 
 #include <sys/types.h>
@@ -6,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace olympics::testing {
+namespace olympics {
 
 class Process {
  public:
@@ -31,11 +32,7 @@ class Process {
   std::string log_path_;
 };
 
-// A fresh LCM URL (own port) per call, so tests never hear each other.
-std::string unique_lcm_url();
 // A fresh empty directory under /tmp.
 std::string temp_dir();
-// build/bin/<name>
-std::string program(const std::string& name);
 
-}  // namespace olympics::testing
+}  // namespace olympics

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <thread>
 
-namespace olympics::testing {
+namespace olympics {
 
 Process::Process(const std::vector<std::string>& argv, const std::string& log_path)
     : log_path_(log_path) {
@@ -72,18 +72,10 @@ bool Process::wait_for_output(const std::string& text, double timeout_s) {
   return false;
 }
 
-std::string unique_lcm_url() {
-  static int counter = 0;
-  int port = 20000 + (getpid() * 7 + counter++ * 101) % 30000;
-  return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0&recv_buf_size=4194304";
-}
-
 std::string temp_dir() {
-  char tmpl[] = "/tmp/olympics-test-XXXXXX";
+  char tmpl[] = "/tmp/olympics-XXXXXX";
   if (!mkdtemp(tmpl)) throw std::runtime_error("mkdtemp failed");
   return tmpl;
 }
 
-std::string program(const std::string& name) { return std::string(OLYMPICS_BIN_DIR) + "/" + name; }
-
-}  // namespace olympics::testing
+}  // namespace olympics

@@ -1,0 +1,63 @@
+// The league's state in SQLite: tournaments and every game with its progress, written before
+// each step is taken, so a league killed at any moment (kill -9) resumes where it was.
+#pragma once
+
+#include <sqlite3.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace olympics::selfplay {
+
+struct Entrant {
+  std::string name;    // unique in the tournament
+  std::string policy;  // a bot olympics-agent plays: zero, random
+  std::uint64_t seed = 0;
+};
+
+struct TournamentSpec {
+  std::string name;
+  std::string format;  // round-robin, double-round-robin, swiss, knockout
+  std::string sport = "sandbox";
+  std::string mode = "1v1";
+  std::uint64_t seed = 1;
+  double time_limit_s = 0;
+  std::vector<Entrant> entrants;
+};
+
+enum class GameStatus { Pending, Dispatched, Done };
+
+struct Game {
+  int index = 0;
+  int round = 0;
+  int home = 0, away = 0;  // entrant indices; away < 0 is a bye
+  GameStatus status = GameStatus::Pending;
+  int attempt = 0;
+  std::string request_id, server_id, match_id;
+  double home_score = 0;  // 1 win, 0.5 draw, 0 loss
+  std::string reason;
+  int ticks = 0;
+};
+
+class LeagueStore {
+ public:
+  explicit LeagueStore(const std::string& path);  // throws with what to check
+  ~LeagueStore();
+  LeagueStore(const LeagueStore&) = delete;
+  LeagueStore& operator=(const LeagueStore&) = delete;
+
+  std::optional<TournamentSpec> find_tournament(const std::string& name);
+  std::vector<std::string> tournament_names();
+  void create_tournament(const TournamentSpec& spec);
+  std::vector<Game> games(const std::string& tournament);
+  void add_games(const std::string& tournament, const std::vector<Game>& games);
+  void update_game(const std::string& tournament, const Game& game);
+
+ private:
+  void exec(const std::string& sql);
+  sqlite3* db_ = nullptr;
+  std::string path_;
+};
+
+}  // namespace olympics::selfplay

@@ -1,0 +1,141 @@
+// olympics-league: tournaments among policies over olympics-servers, with ratings.
+//
+//   olympics-league run   --db league.db --name cup --format round-robin
+//                         --entrants zero,random:1,random:2,zero [--servers a,b] [--parallel 2]
+//   olympics-league table --db league.db --name cup [--svg ratings.svg] [--json]
+//   olympics-league list  --db league.db
+//
+// run resumes a tournament of that name if the database has it (after a crash or kill -9).
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "leaderboard.h"
+#include "league_store.h"
+#include "tournament_runner.h"
+
+namespace {
+
+using namespace olympics::selfplay;
+
+// "zero,random:3,zero" -> zero, random-3, zero-2 (policy olympics-agent plays, and its seed).
+std::vector<Entrant> parse_entrants(const std::vector<std::string>& specs) {
+  std::vector<Entrant> out;
+  std::map<std::string, int> seen;
+  for (const auto& spec : specs) {
+    Entrant e;
+    auto colon = spec.find(':');
+    e.policy = spec.substr(0, colon);
+    if (e.policy != "zero" && e.policy != "random")
+      throw std::invalid_argument("unknown entrant policy \"" + e.policy +
+                                  "\"; bots today: zero, random[:seed]");
+    e.seed = colon == std::string::npos ? 1 : std::stoull(spec.substr(colon + 1));
+    e.name = colon == std::string::npos ? e.policy : e.policy + "-" + spec.substr(colon + 1);
+    if (int n = ++seen[e.name]; n > 1) e.name += "-" + std::to_string(n);
+    out.push_back(e);
+  }
+  if (out.size() < 2) throw std::invalid_argument("a tournament needs at least two entrants");
+  return out;
+}
+
+std::string agent_next_to_me() {
+  char self[4096];
+  ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+  std::string path = n > 0 ? std::string(self, static_cast<size_t>(n)) : "olympics-league";
+  return path.substr(0, path.rfind('/') + 1) + "olympics-agent";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"olympics-league: tournaments and ratings among policies over olympics-servers"};
+  app.require_subcommand(1);
+  std::string db = "olympics-league.db", name;
+  TournamentSpec spec;
+  RunnerSettings runner;
+  std::vector<std::string> entrants;
+  auto* run = app.add_subcommand("run", "play (or resume) a tournament to its end");
+  run->add_option("--db", db, "league database (SQLite)");
+  run->add_option("--name", name, "tournament name (resumes it if it exists)")->required();
+  run->add_option("--format", spec.format, "round-robin, double-round-robin, swiss, knockout")
+      ->check(CLI::IsMember({"round-robin", "double-round-robin", "swiss", "knockout"}));
+  run->add_option("--entrants", entrants, "bots: zero, random[:seed], comma separated")
+      ->delimiter(',');
+  run->add_option("--sport", spec.sport, "sport");
+  run->add_option("--mode", spec.mode, "mode (1v1 today)");
+  run->add_option("--seed", spec.seed, "tournament seed (match seeds derive from it)");
+  run->add_option("--time-limit", spec.time_limit_s, "seconds per match (0: the sport's default)");
+  run->add_option("--servers", runner.servers, "server ids to use (default: any)")->delimiter(',');
+  run->add_option("--parallel", runner.parallel, "games at once")->check(CLI::PositiveNumber);
+  run->add_option("--lcm-url", runner.lcm_url, "LCM provider URL");
+  run->add_option("--log-dir", runner.log_dir, "policy workers' logs");
+  bool quiet = false;
+  run->add_flag("--quiet", quiet, "no progress bar");
+
+  std::string svg;
+  bool json = false;
+  auto* table = app.add_subcommand("table", "print a tournament's table (and plot its ratings)");
+  table->add_option("--db", db, "league database");
+  table->add_option("--name", name, "tournament name")->required();
+  table->add_option("--svg", svg, "write the ratings over time to this SVG file");
+  table->add_flag("--json", json, "JSON instead of a table");
+  auto* list = app.add_subcommand("list", "list the tournaments");
+  list->add_option("--db", db, "league database");
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    LeagueStore store(db);
+    if (*list) {
+      for (const auto& n : store.tournament_names()) {
+        auto games = store.games(n);
+        int done = 0;
+        for (const auto& g : games) done += g.status == GameStatus::Done;
+        auto t = store.find_tournament(n);
+        std::printf("%-20s %-18s %-8s %d/%zu games\n", n.c_str(), t->format.c_str(),
+                    t->sport.c_str(), done, games.size());
+      }
+      return 0;
+    }
+    if (*run) {
+      spec.name = name;
+      if (auto existing = store.find_tournament(name)) {
+        std::fprintf(stderr, "resuming tournament %s\n", name.c_str());
+        spec = *existing;
+      } else {
+        spec.entrants = parse_entrants(entrants);
+        store.create_tournament(spec);
+      }
+      runner.agent_program = agent_next_to_me();
+      runner.progress = !quiet;
+      TournamentRunner(store, spec, runner).run();
+    }
+    auto t = store.find_tournament(name);
+    if (!t) throw std::invalid_argument("no tournament \"" + name + "\" in " + db);
+    Leaderboard board = compute_leaderboard(*t, store.games(name));
+    if (json) {
+      nlohmann::json rows = nlohmann::json::array();
+      for (const auto& r : board.rows)
+        rows.push_back({{"entrant", r.name},
+                        {"points", r.standing.points},
+                        {"wins", r.standing.wins},
+                        {"draws", r.standing.draws},
+                        {"losses", r.standing.losses},
+                        {"byes", r.standing.byes},
+                        {"mu", r.skill.mu},
+                        {"sigma", r.skill.sigma},
+                        {"elo", r.elo}});
+      std::printf("%s\n", rows.dump(2).c_str());
+    } else {
+      std::printf("%s", format_table(board).c_str());
+    }
+    if (!svg.empty()) std::ofstream(svg) << ratings_svg(*t, board);
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "olympics-league: %s\n", e.what());
+    return 2;
+  }
+}

@@ -1,0 +1,258 @@
+#include "tournament_runner.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "channels.h"
+#include "olympics/heartbeat_t.hpp"
+#include "olympics/match_created_t.hpp"
+#include "olympics/match_request_t.hpp"
+#include "olympics/match_result_t.hpp"
+#include "olympics/server_announce_t.hpp"
+#include "tournament.h"
+#include "version.h"
+
+namespace olympics::selfplay {
+namespace {
+constexpr auto kRequestResend = std::chrono::milliseconds(250);
+constexpr auto kProbeInterval = std::chrono::seconds(1);
+}  // namespace
+
+TournamentRunner::TournamentRunner(LeagueStore& store, TournamentSpec spec, RunnerSettings settings)
+    : store_(store),
+      spec_(std::move(spec)),
+      settings_(std::move(settings)),
+      transport_({settings_.lcm_url}) {
+  transport_.subscribe(protocol::kAnnounce, [this](const std::string&, const std::uint8_t* d,
+                                                   int n) { on_announce(d, n); });
+  transport_.subscribe(protocol::kCreated, [this](const std::string&, const std::uint8_t* d,
+                                                  int n) { on_created(d, n); });
+  transport_.subscribe(protocol::kResult, [this](const std::string&, const std::uint8_t* d, int n) {
+    on_result(d, n);
+  });
+  games_ = store_.games(spec_.name);
+  // Games that were on their way when a previous run stopped: find them again (same request id,
+  // which the server answers with the same match) and restart their policy workers (a slot that
+  // an old worker still plays refuses the new one, which then just exits).
+  for (auto& g : games_)
+    if (g.status == GameStatus::Dispatched) in_flight_[g.index];
+}
+
+TournamentRunner::~TournamentRunner() = default;
+
+void TournamentRunner::save(const Game& g) { store_.update_game(spec_.name, g); }
+
+Game* TournamentRunner::game_by_request(const std::string& request_id) {
+  for (auto& g : games_)
+    if (g.status == GameStatus::Dispatched && g.request_id == request_id) return &g;
+  return nullptr;
+}
+
+void TournamentRunner::on_announce(const std::uint8_t* data, int size) {
+  auto a = protocol::decode<olympics::server_announce_t>(data, size);
+  if (!a) return;
+  if (!settings_.servers.empty() && std::find(settings_.servers.begin(), settings_.servers.end(),
+                                              a->server_id) == settings_.servers.end())
+    return;
+  if (std::find(a->sports.begin(), a->sports.end(), spec_.sport) == a->sports.end()) return;
+  servers_[a->server_id] = {Clock::now(), a->capacity - a->active_matches};
+}
+
+// Schedules the next round when every game so far is done; false when the tournament is over.
+bool TournamentRunner::schedule_next_round() {
+  const int n = static_cast<int>(spec_.entrants.size());
+  std::vector<Pairing> pairs;
+  if (games_.empty() && (spec_.format == "round-robin" || spec_.format == "double-round-robin")) {
+    pairs = round_robin(n, spec_.format == "double-round-robin");
+  } else if (spec_.format == "swiss" || spec_.format == "knockout") {
+    std::vector<GameResult> results;
+    int rounds = 0;
+    for (const auto& g : games_) {
+      results.push_back({g.home, g.away, g.home_score});
+      rounds = std::max(rounds, g.round + 1);
+    }
+    if (spec_.format == "swiss") {
+      if (rounds >= swiss_round_count(n)) return false;
+      pairs = swiss_round(n, rounds, results);
+    } else {
+      std::vector<int> survivors;
+      if (rounds == 0) {
+        for (int i = 0; i < n; ++i) survivors.push_back(i);
+      } else {
+        for (const auto& r : results)
+          if (games_[&r - results.data()].round == rounds - 1)
+            survivors.push_back(knockout_winner(r));
+        std::sort(survivors.begin(), survivors.end());  // seed order
+      }
+      if (survivors.size() <= 1) return false;
+      pairs = knockout_round(survivors, rounds);
+    }
+  } else {
+    return false;
+  }
+  std::vector<Game> added;
+  for (const auto& p : pairs) {
+    Game g;
+    g.index = static_cast<int>(games_.size() + added.size());
+    g.round = p.round, g.home = p.home, g.away = p.away;
+    if (p.away < 0) g.status = GameStatus::Done, g.home_score = 1, g.reason = "bye";
+    added.push_back(g);
+  }
+  store_.add_games(spec_.name, added);
+  games_.insert(games_.end(), added.begin(), added.end());
+  return true;
+}
+
+void TournamentRunner::dispatch() {
+  const auto now = Clock::now();
+  for (auto& g : games_) {
+    if (static_cast<int>(in_flight_.size()) >= settings_.parallel) return;
+    if (g.status != GameStatus::Pending) continue;
+    // The live server with the most room, by id on a tie.
+    std::string best;
+    int room = 0;
+    for (auto& [id, s] : servers_) {
+      if (now - s.seen > std::chrono::duration<double>(settings_.server_silence_s)) continue;
+      if (s.free > room) best = id, room = s.free;
+    }
+    if (best.empty()) return;
+    --servers_[best].free;
+    g.status = GameStatus::Dispatched;
+    g.server_id = best;
+    g.request_id = spec_.name + "-g" + std::to_string(g.index) + "-a" + std::to_string(g.attempt);
+    g.match_id.clear();
+    save(g);  // before asking, so a restart asks again with the same id
+    in_flight_[g.index];
+  }
+}
+
+void TournamentRunner::keep_in_touch() {
+  const auto now = Clock::now();
+  for (auto& [index, f] : in_flight_) {
+    Game& g = games_[index];
+    // A server is gone when it fell silent, or never spoke since this run started.
+    const auto silence = std::chrono::duration<double>(settings_.server_silence_s);
+    auto server = servers_.find(g.server_id);
+    const bool gone =
+        server != servers_.end() ? now - server->second.seen > silence : now - started_ > silence;
+    if (gone) {
+      retry(g, "server " + g.server_id + " stopped announcing");
+      return;  // in_flight_ changed
+    }
+    if (g.match_id.empty() && now - f.last_request >= kRequestResend) {
+      olympics::match_request_t r;
+      r.protocol_version = protocol::kProtocolVersion;
+      r.request_id = g.request_id;
+      r.server_id = g.server_id;
+      r.sport = spec_.sport;
+      r.mode = spec_.mode;
+      r.seed = static_cast<std::int64_t>(spec_.seed * 1000 + static_cast<std::uint64_t>(g.index));
+      r.time_limit_s = static_cast<float>(spec_.time_limit_s);
+      r.realtime = false;
+      transport_.publish(protocol::kRequest, r);
+      f.last_request = now;
+    }
+    if (!g.match_id.empty() && !f.workers_started) start_workers(g);
+    if (!g.match_id.empty() && now - f.last_probe >= kProbeInterval) {
+      // Any message about a finished match makes its server say the result again.
+      olympics::heartbeat_t h;
+      h.protocol_version = protocol::kProtocolVersion;
+      h.match_id = g.match_id;
+      h.client_id = "league-" + spec_.name;
+      transport_.publish(protocol::kHeartbeat, h);
+      f.last_probe = now;
+    }
+  }
+}
+
+void TournamentRunner::on_created(const std::uint8_t* data, int size) {
+  auto c = protocol::decode<olympics::match_created_t>(data, size);
+  if (!c) return;
+  Game* g = game_by_request(c->request_id);
+  if (!g || !g->match_id.empty()) return;
+  g->match_id = c->match_id;
+  save(*g);  // before the workers start, so a restart knows which match to look for
+  start_workers(*g);
+}
+
+void TournamentRunner::start_workers(Game& g) {
+  InFlight& f = in_flight_[g.index];
+  f.workers_started = true;
+  f.last_request = Clock::now();
+  for (int slot = 0; slot < 2; ++slot) {
+    const Entrant& e = spec_.entrants[slot == 0 ? g.home : g.away];
+    std::vector<std::string> argv = {settings_.agent_program,
+                                     "--match",
+                                     g.match_id,
+                                     "--slots",
+                                     std::to_string(slot),
+                                     "--policy",
+                                     e.policy,
+                                     "--policy-seed",
+                                     std::to_string(e.seed),
+                                     "--name",
+                                     e.name,
+                                     "--policy-id",
+                                     e.policy,
+                                     "--timeout",
+                                     "60"};
+    if (!settings_.lcm_url.empty()) argv.insert(argv.end(), {"--lcm-url", settings_.lcm_url});
+    f.workers.push_back(std::make_unique<Process>(
+        argv, settings_.log_dir + "/" + g.match_id + "-slot" + std::to_string(slot) + ".log"));
+  }
+}
+
+void TournamentRunner::on_result(const std::uint8_t* data, int size) {
+  auto r = protocol::decode<olympics::match_result_t>(data, size);
+  if (!r) return;
+  for (auto& g : games_) {
+    if (g.status != GameStatus::Dispatched || g.match_id != r->match_id) continue;
+    if (r->reason.rfind("cancelled", 0) == 0) return retry(g, r->reason);
+    g.status = GameStatus::Done;
+    g.home_score = r->winner_team == 0 ? 1.0 : r->winner_team == 1 ? 0.0 : 0.5;
+    g.reason = r->reason;
+    g.ticks = r->ticks;
+    save(g);
+    in_flight_.erase(g.index);
+    show_progress();
+    return;
+  }
+}
+
+void TournamentRunner::retry(Game& g, const std::string& why) {
+  std::fprintf(stderr, "\ngame %d (%s vs %s): %s; trying again\n", g.index,
+               spec_.entrants[g.home].name.c_str(), spec_.entrants[g.away].name.c_str(),
+               why.c_str());
+  g.status = GameStatus::Pending;
+  ++g.attempt;
+  g.match_id.clear();
+  save(g);
+  in_flight_.erase(g.index);
+}
+
+void TournamentRunner::show_progress() {
+  if (!settings_.progress) return;
+  int done = 0;
+  for (const auto& g : games_) done += g.status == GameStatus::Done;
+  const int total = static_cast<int>(games_.size()), width = 30;
+  const int filled = total ? width * done / total : 0;
+  std::fprintf(stderr, "\r%s [%s%s] %d/%d games", spec_.name.c_str(),
+               std::string(filled, '#').c_str(), std::string(width - filled, '.').c_str(), done,
+               total);
+  if (done == total) std::fprintf(stderr, "\n");
+}
+
+void TournamentRunner::run() {
+  started_ = Clock::now();
+  for (;;) {
+    bool open = false;
+    for (const auto& g : games_) open = open || g.status != GameStatus::Done;
+    if (!open && !schedule_next_round()) break;
+    dispatch();
+    keep_in_touch();
+    transport_.handle(10);
+  }
+  show_progress();
+}
+
+}  // namespace olympics::selfplay

@@ -1,0 +1,71 @@
+// Plays a tournament to its end over the olympics-servers on the LCM network: schedules games
+// (all rounds of a round robin at once; Swiss and knockout round by round), dispatches each to a
+// server with room (from the servers' announcements), starts a policy worker (olympics-agent)
+// per slot, records every result, and retries a game whose server died or cancelled it. Every
+// step is written to the LeagueStore before it is taken, so a killed league resumes.
+#pragma once
+
+#include <chrono>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "league_store.h"
+#include "process.h"
+#include "transport.h"
+
+namespace olympics::selfplay {
+
+struct RunnerSettings {
+  std::string lcm_url;
+  std::vector<std::string> servers;  // allowed server ids; empty = any that announces
+  int parallel = 2;                  // games in flight at once
+  std::string agent_program;         // path of olympics-agent
+  std::string log_dir = "/tmp";      // policy workers' output
+  double server_silence_s = 5;       // a server not announcing this long is gone
+  bool progress = true;              // a progress bar on stderr
+};
+
+class TournamentRunner {
+ public:
+  TournamentRunner(LeagueStore& store, TournamentSpec spec, RunnerSettings settings);
+  ~TournamentRunner();
+  // Returns when every game has a result.
+  void run();
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  struct Server {
+    Clock::time_point seen;
+    int free = 0;
+  };
+  struct InFlight {
+    Clock::time_point last_request, last_probe;
+    bool workers_started = false;
+    std::vector<std::unique_ptr<Process>> workers;
+  };
+
+  bool schedule_next_round();
+  void dispatch();
+  void on_created(const std::uint8_t* data, int size);
+  void on_result(const std::uint8_t* data, int size);
+  void on_announce(const std::uint8_t* data, int size);
+  void start_workers(Game& game);
+  void retry(Game& game, const std::string& why);
+  void keep_in_touch();
+  void save(const Game& game);
+  void show_progress();
+  Game* game_by_request(const std::string& request_id);
+
+  LeagueStore& store_;
+  TournamentSpec spec_;
+  RunnerSettings settings_;
+  protocol::Transport transport_;
+  std::vector<Game> games_;
+  std::map<int, InFlight> in_flight_;  // by game index
+  std::map<std::string, Server> servers_;
+  Clock::time_point started_;
+};
+
+}  // namespace olympics::selfplay

@@ -1,0 +1,140 @@
+// The league over real servers: a round robin of four bots on two servers, checked against the
+// servers' own match records; and a league killed with SIGKILL mid-tournament that resumes to
+// the same final table as an uninterrupted run.
+#include <csignal>
+#include <set>
+#include <thread>
+
+#include "leaderboard.h"
+#include "league_store.h"
+#include "server_fixture.h"
+
+namespace olympics::testing {
+namespace {
+
+using selfplay::GameStatus;
+
+struct TwoServers {
+  std::string url = unique_lcm_url();
+  ServerFixture a{std::vector<std::string>{}, url, "", "alpha"};
+  ServerFixture b{std::vector<std::string>{}, url, "", "beta"};
+};
+
+std::unique_ptr<Process> league(const TwoServers& servers, const std::string& db,
+                                const std::string& name, const std::string& log) {
+  return std::make_unique<Process>(std::vector<std::string>{program("olympics-league"),
+                                                            "run",
+                                                            "--db",
+                                                            db,
+                                                            "--name",
+                                                            name,
+                                                            "--format",
+                                                            "round-robin",
+                                                            "--entrants",
+                                                            "zero,random:1,random:2,zero",
+                                                            "--seed",
+                                                            "3",
+                                                            "--time-limit",
+                                                            "5",
+                                                            "--parallel",
+                                                            "2",
+                                                            "--lcm-url",
+                                                            servers.url,
+                                                            "--log-dir",
+                                                            temp_dir(),
+                                                            "--quiet"},
+                                   log);
+}
+
+TEST(League, RoundRobinOfFourBotsOnTwoServersMatchesTheServersRecords) {
+  TwoServers servers;
+  const std::string dir = temp_dir(), db = dir + "/league.db";
+  auto run = league(servers, db, "cup", dir + "/league.log");
+  ASSERT_EQ(run->wait(120), 0) << run->output();
+
+  selfplay::LeagueStore store(db);
+  auto spec = store.find_tournament("cup");
+  ASSERT_TRUE(spec);
+  auto games = store.games("cup");
+  ASSERT_EQ(games.size(), 6u);
+  auto alpha = servers.a.store(), beta = servers.b.store();
+  std::set<std::string> used;
+  std::vector<selfplay::GameResult> from_servers;
+  for (const auto& g : games) {
+    EXPECT_EQ(g.status, GameStatus::Done);
+    auto record = g.server_id == "alpha" ? alpha.find(g.match_id) : beta.find(g.match_id);
+    ASSERT_TRUE(record) << "game " << g.index << ": match " << g.match_id << " not stored on "
+                        << g.server_id;
+    used.insert(g.server_id);
+    // The stored record names the right entrants in the right slots and has the league's result.
+    EXPECT_EQ(record->participants[0].agent, spec->entrants[g.home].name);
+    EXPECT_EQ(record->participants[1].agent, spec->entrants[g.away].name);
+    const double home_score = record->winner_team == 0 ? 1.0 : record->winner_team == 1 ? 0.0 : 0.5;
+    EXPECT_EQ(g.home_score, home_score) << "game " << g.index;
+    from_servers.push_back({g.home, g.away, home_score});
+  }
+  EXPECT_EQ(used.size(), 2u) << "both servers should have played";
+  // The printed table is the table of the servers' records.
+  auto expected = selfplay::standings(4, from_servers);
+  auto board = selfplay::compute_leaderboard(*spec, games);
+  for (size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(board.rows[i].standing.entrant, expected[i].entrant);
+    EXPECT_EQ(board.rows[i].standing.points, expected[i].points);
+    EXPECT_NE(run->output().find(board.rows[i].name), std::string::npos);
+  }
+}
+
+TEST(League, KilledWithSigkillResumesToTheSameFinalTable) {
+  TwoServers servers;
+  const std::string dir = temp_dir();
+  auto reference = league(servers, dir + "/a.db", "whole", dir + "/a.log");
+  ASSERT_EQ(reference->wait(120), 0) << reference->output();
+
+  const std::string db = dir + "/b.db";
+  auto first = league(servers, db, "interrupted", dir + "/b1.log");
+  // Kill it once some, but not all, games are done.
+  bool killed = false;
+  for (int i = 0; i < 2000 && !killed; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    try {
+      selfplay::LeagueStore peek(db);
+      int done = 0;
+      for (const auto& g : peek.games("interrupted")) done += g.status == GameStatus::Done;
+      if (done >= 2) {
+        first->signal(SIGKILL);
+        killed = true;
+      }
+    } catch (const std::exception&) {
+    }
+  }
+  ASSERT_TRUE(killed) << first->output();
+  first->wait(10);
+  {
+    selfplay::LeagueStore peek(db);
+    int done = 0;
+    for (const auto& g : peek.games("interrupted")) done += g.status == GameStatus::Done;
+    EXPECT_LT(done, 6) << "the league finished before it could be killed";
+  }
+  auto second = league(servers, db, "interrupted", dir + "/b2.log");
+  ASSERT_EQ(second->wait(120), 0) << second->output();
+  EXPECT_NE(second->output().find("resuming tournament interrupted"), std::string::npos);
+
+  selfplay::LeagueStore a(dir + "/a.db"), b(db);
+  auto board_a = selfplay::compute_leaderboard(*a.find_tournament("whole"), a.games("whole"));
+  auto board_b =
+      selfplay::compute_leaderboard(*b.find_tournament("interrupted"), b.games("interrupted"));
+  ASSERT_EQ(board_a.rows.size(), board_b.rows.size());
+  for (size_t i = 0; i < board_a.rows.size(); ++i) {
+    EXPECT_EQ(board_a.rows[i].name, board_b.rows[i].name);
+    EXPECT_EQ(board_a.rows[i].standing.points, board_b.rows[i].standing.points);
+    EXPECT_EQ(board_a.rows[i].skill.mu, board_b.rows[i].skill.mu);  // bit for bit
+    EXPECT_EQ(board_a.rows[i].elo, board_b.rows[i].elo);
+  }
+  // No game counted twice: six games, each done once.
+  auto games = b.games("interrupted");
+  ASSERT_EQ(games.size(), 6u);
+  for (const auto& g : games) EXPECT_EQ(g.status, GameStatus::Done);
+}
+
+}  // namespace
+}  // namespace olympics::testing
