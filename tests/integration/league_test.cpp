@@ -136,5 +136,46 @@ TEST(League, KilledWithSigkillResumesToTheSameFinalTable) {
   for (const auto& g : games) EXPECT_EQ(g.status, GameStatus::Done);
 }
 
+TEST(League, AGameOnAServerThatDiesIsPlayedAgainElsewhere) {
+  TwoServers servers;
+  const std::string dir = temp_dir(), db = dir + "/league.db";
+  // A game takes ~100 ms of wall time; the database is polled every 2 ms for one on beta.
+  auto run = std::make_unique<Process>(
+      std::vector<std::string>{program("olympics-league"), "run", "--db", db, "--name", "outage",
+                               "--format", "round-robin", "--entrants", "zero,zero,zero",
+                               "--time-limit", "3", "--parallel", "2", "--lcm-url", servers.url,
+                               "--log-dir", temp_dir(), "--quiet"},
+      dir + "/league.log");
+  // Wait until a game is under way on beta, then kill beta.
+  bool killed = false;
+  for (int i = 0; i < 4000 && !killed; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    try {
+      selfplay::LeagueStore peek(db);
+      for (const auto& g : peek.games("outage"))
+        if (g.status == GameStatus::Dispatched && g.server_id == "beta" && !g.match_id.empty()) {
+          servers.b.server().signal(SIGKILL);
+          killed = true;
+          break;
+        }
+    } catch (const std::exception&) {
+    }
+  }
+  ASSERT_TRUE(killed) << "no game reached beta";
+  ASSERT_EQ(run->wait(120), 0) << run->output();
+  EXPECT_NE(run->output().find("server beta stopped announcing; trying again"), std::string::npos)
+      << run->output();
+  selfplay::LeagueStore store(db);
+  int retried = 0;
+  for (const auto& g : store.games("outage")) {
+    EXPECT_EQ(g.status, GameStatus::Done);
+    if (g.attempt > 0) {
+      ++retried;
+      EXPECT_EQ(g.server_id, "alpha");  // played again on the server that is left
+    }
+  }
+  EXPECT_GE(retried, 1);
+}
+
 }  // namespace
 }  // namespace olympics::testing
