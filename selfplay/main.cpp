@@ -22,7 +22,8 @@ namespace {
 
 using namespace olympics::selfplay;
 
-// "zero,random:3,zero" -> zero, random-3, zero-2 (policy olympics-agent plays, and its seed).
+// "zero,random:3,mlp:runs/v7.safetensors,zero" -> zero, random-3, mlp-v7, zero-2: the policy
+// olympics-agent plays (a bot, or a frozen snapshot) and its seed.
 std::vector<Entrant> parse_entrants(const std::vector<std::string>& specs) {
   std::vector<Entrant> out;
   std::map<std::string, int> seen;
@@ -30,11 +31,19 @@ std::vector<Entrant> parse_entrants(const std::vector<std::string>& specs) {
     Entrant e;
     auto colon = spec.find(':');
     e.policy = spec.substr(0, colon);
-    if (e.policy != "zero" && e.policy != "random")
-      throw std::invalid_argument("unknown entrant policy \"" + e.policy +
-                                  "\"; bots today: zero, random[:seed]");
-    e.seed = colon == std::string::npos ? 1 : std::stoull(spec.substr(colon + 1));
-    e.name = colon == std::string::npos ? e.policy : e.policy + "-" + spec.substr(colon + 1);
+    if (e.policy == "mlp" && colon != std::string::npos) {
+      const std::string file = spec.substr(colon + 1);
+      if (!std::ifstream(file)) throw std::invalid_argument("snapshot " + file + " cannot be read");
+      e.policy = spec;
+      std::string stem = file.substr(file.rfind('/') + 1);
+      e.name = "mlp-" + stem.substr(0, stem.find('.'));
+    } else if (e.policy == "zero" || e.policy == "random") {
+      e.seed = colon == std::string::npos ? 1 : std::stoull(spec.substr(colon + 1));
+      e.name = colon == std::string::npos ? e.policy : e.policy + "-" + spec.substr(colon + 1);
+    } else {
+      throw std::invalid_argument("unknown entrant \"" + spec +
+                                  "\"; entrants: zero, random[:seed], mlp:<snapshot.safetensors>");
+    }
     if (int n = ++seen[e.name]; n > 1) e.name += "-" + std::to_string(n);
     out.push_back(e);
   }
@@ -63,7 +72,7 @@ int main(int argc, char** argv) {
   run->add_option("--name", name, "tournament name (resumes it if it exists)")->required();
   run->add_option("--format", spec.format, "round-robin, double-round-robin, swiss, knockout")
       ->check(CLI::IsMember({"round-robin", "double-round-robin", "swiss", "knockout"}));
-  run->add_option("--entrants", entrants, "bots: zero, random[:seed], comma separated")
+  run->add_option("--entrants", entrants, "zero, random[:seed], mlp:<snapshot>; comma separated")
       ->delimiter(',');
   run->add_option("--sport", spec.sport, "sport");
   run->add_option("--mode", spec.mode, "mode (1v1 today)");

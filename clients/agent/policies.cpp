@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "mlp_snapshot.h"
+
 namespace olympics::client {
 namespace {
 
@@ -25,13 +27,25 @@ class RandomPolicy : public Policy {
   std::mt19937_64 rng_;
 };
 
+class SnapshotPolicy : public Policy {
+ public:
+  explicit SnapshotPolicy(const std::string& path) : snapshot_(MlpSnapshot::load(path)) {}
+  void act(std::span<const float> observation, std::span<float> action) override {
+    snapshot_.act(observation, action);
+  }
+
+ private:
+  MlpSnapshot snapshot_;
+};
+
 }  // namespace
 
-std::vector<std::string> policy_names() { return {"zero", "random"}; }
+std::vector<std::string> policy_names() { return {"zero", "random", "mlp:<snapshot.safetensors>"}; }
 
 std::unique_ptr<Policy> make_policy(const std::string& name, std::uint64_t seed) {
   if (name == "zero") return std::make_unique<ZeroPolicy>();
   if (name == "random") return std::make_unique<RandomPolicy>(seed);
+  if (name.rfind("mlp:", 0) == 0) return std::make_unique<SnapshotPolicy>(name.substr(4));
   std::string known;
   for (const auto& n : policy_names()) known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown policy \"" + name + "\"; known policies: " + known);

@@ -1,5 +1,5 @@
-// Policies olympics-agent can play: zero (hold the default pose), random, and (as sports land)
-// a scripted baseline per sport.
+// Policies olympics-agent can play: zero (hold the default pose), random, a frozen MLP snapshot
+// (mlp:FILE, docs/snapshots.md), and (as sports land) a scripted baseline per sport.
 #pragma once
 
 #include <memory>
