@@ -15,7 +15,8 @@ Leaderboard compute_leaderboard(const TournamentSpec& spec, const std::vector<Ga
   board.mu_history.assign(n, {});
   for (int i = 0; i < n; ++i) board.mu_history[i].push_back(skill[i].mu);
   for (const auto& g : games) {  // in game order, whatever order they finished in
-    if (g.status != GameStatus::Done) continue;
+    // A policy against itself says nothing about its strength: no points, no rating change.
+    if (g.status != GameStatus::Done || g.home == g.away) continue;
     results.push_back({g.home, g.away, g.home_score});
     if (g.away < 0) continue;
     const int home_rank = g.home_score > 0.5 ? 0 : 1, away_rank = g.home_score < 0.5 ? 0 : 1;

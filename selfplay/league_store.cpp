@@ -9,7 +9,8 @@ namespace {
 constexpr const char* kSchema = R"sql(
 CREATE TABLE IF NOT EXISTS tournaments (
   name TEXT PRIMARY KEY, format TEXT NOT NULL, sport TEXT NOT NULL, mode TEXT NOT NULL,
-  seed INTEGER NOT NULL, time_limit_s REAL NOT NULL, entrants TEXT NOT NULL);
+  seed INTEGER NOT NULL, time_limit_s REAL NOT NULL, entrants TEXT NOT NULL,
+  options TEXT NOT NULL);
 CREATE TABLE IF NOT EXISTS games (
   tournament TEXT NOT NULL REFERENCES tournaments(name), idx INTEGER NOT NULL,
   round INTEGER NOT NULL, home INTEGER NOT NULL, away INTEGER NOT NULL, status INTEGER NOT NULL,
@@ -76,9 +77,9 @@ void LeagueStore::exec(const std::string& sql) {
 }
 
 std::optional<TournamentSpec> LeagueStore::find_tournament(const std::string& name) {
-  Stmt q(
-      db_,
-      "SELECT format, sport, mode, seed, time_limit_s, entrants FROM tournaments WHERE name = ?1");
+  Stmt q(db_,
+         "SELECT format, sport, mode, seed, time_limit_s, entrants, options FROM tournaments "
+         "WHERE name = ?1");
   q.text(1, name);
   if (!q.step()) return std::nullopt;
   TournamentSpec t;
@@ -88,6 +89,7 @@ std::optional<TournamentSpec> LeagueStore::find_tournament(const std::string& na
   t.time_limit_s = sqlite3_column_double(q.s, 4);
   for (const auto& e : nlohmann::json::parse(q.col_text(5)))
     t.entrants.push_back({e.at("name"), e.at("policy"), e.at("seed")});
+  t.options = q.col_text(6);
   return t;
 }
 
@@ -98,18 +100,32 @@ std::vector<std::string> LeagueStore::tournament_names() {
   return out;
 }
 
-void LeagueStore::create_tournament(const TournamentSpec& t) {
+namespace {
+std::string entrants_json(const TournamentSpec& t) {
   nlohmann::json entrants = nlohmann::json::array();
   for (const auto& e : t.entrants)
     entrants.push_back({{"name", e.name}, {"policy", e.policy}, {"seed", e.seed}});
-  Stmt(db_, "INSERT INTO tournaments VALUES (?1,?2,?3,?4,?5,?6,?7)")
+  return entrants.dump();
+}
+}  // namespace
+
+void LeagueStore::update_entrants(const TournamentSpec& t) {
+  Stmt(db_, "UPDATE tournaments SET entrants = ?2 WHERE name = ?1")
+      .text(1, t.name)
+      .text(2, entrants_json(t))
+      .step();
+}
+
+void LeagueStore::create_tournament(const TournamentSpec& t) {
+  Stmt(db_, "INSERT INTO tournaments VALUES (?1,?2,?3,?4,?5,?6,?7,?8)")
       .text(1, t.name)
       .text(2, t.format)
       .text(3, t.sport)
       .text(4, t.mode)
       .integer(5, static_cast<std::int64_t>(t.seed))
       .num(6, t.time_limit_s)
-      .text(7, entrants.dump())
+      .text(7, entrants_json(t))
+      .text(8, t.options.empty() ? "{}" : t.options)
       .step();
 }
 

@@ -18,7 +18,8 @@ struct Entrant {
 
 struct TournamentSpec {
   std::string name;
-  std::string format;  // round-robin, double-round-robin, swiss, knockout
+  std::string format;   // round-robin, double-round-robin, swiss, knockout, selfplay
+  std::string options;  // JSON: the scheduler's settings (self-play), "{}" for tournaments
   std::string sport = "sandbox";
   std::string mode = "1v1";
   std::uint64_t seed = 1;
@@ -50,6 +51,7 @@ class LeagueStore {
   std::optional<TournamentSpec> find_tournament(const std::string& name);
   std::vector<std::string> tournament_names();
   void create_tournament(const TournamentSpec& spec);
+  void update_entrants(const TournamentSpec& spec);  // entrants that joined since (snapshots)
   std::vector<Game> games(const std::string& tournament);
   void add_games(const std::string& tournament, const std::vector<Game>& games);
   void update_game(const std::string& tournament, const Game& game);

@@ -16,6 +16,7 @@
 
 #include "leaderboard.h"
 #include "league_store.h"
+#include "matchmaking.h"
 #include "tournament_runner.h"
 
 namespace {
@@ -24,7 +25,7 @@ using namespace olympics::selfplay;
 
 // "zero,random:3,mlp:runs/v7.safetensors,zero" -> zero, random-3, mlp-v7, zero-2: the policy
 // olympics-agent plays (a bot, or a frozen snapshot) and its seed.
-std::vector<Entrant> parse_entrants(const std::vector<std::string>& specs) {
+std::vector<Entrant> parse_entrants(const std::vector<std::string>& specs, size_t at_least) {
   std::vector<Entrant> out;
   std::map<std::string, int> seen;
   for (const auto& spec : specs) {
@@ -47,7 +48,8 @@ std::vector<Entrant> parse_entrants(const std::vector<std::string>& specs) {
     if (int n = ++seen[e.name]; n > 1) e.name += "-" + std::to_string(n);
     out.push_back(e);
   }
-  if (out.size() < 2) throw std::invalid_argument("a tournament needs at least two entrants");
+  if (out.size() < at_least)
+    throw std::invalid_argument("needs at least " + std::to_string(at_least) + " entrants");
   return out;
 }
 
@@ -85,6 +87,35 @@ int main(int argc, char** argv) {
   bool quiet = false;
   run->add_flag("--quiet", quiet, "no progress bar");
 
+  SelfplayOptions selfplay;
+  std::vector<std::string> bots;
+  auto* sp =
+      app.add_subcommand("selfplay", "the learner's snapshots against opponents by a strategy");
+  sp->add_option("--db", db, "league database (SQLite)");
+  sp->add_option("--name", name, "run name (resumes it if it exists)")->required();
+  sp->add_option("--snapshots", selfplay.snapshots_dir,
+                 "where the learner writes *v<N>.safetensors")
+      ->required();
+  sp->add_option("--window", selfplay.window, "past snapshots kept as opponents");
+  sp->add_option("--strategy", selfplay.strategy,
+                 "latest, alternating:E, mlagents:R, pfsp[:weighting]");
+  sp->add_option("--bot-share", selfplay.bot_share, "share of games against a bot");
+  sp->add_option("--bots", bots, "bots: zero, random[:seed]")->delimiter(',');
+  sp->add_option("--matches", selfplay.matches, "games to play")->check(CLI::PositiveNumber);
+  for (auto* cmd : {sp}) {
+    cmd->add_option("--sport", spec.sport, "sport");
+    cmd->add_option("--mode", spec.mode, "mode (1v1 today)");
+    cmd->add_option("--seed", spec.seed, "seed (match seeds and decisions derive from it)");
+    cmd->add_option("--time-limit", spec.time_limit_s,
+                    "seconds per match (0: the sport's default)");
+    cmd->add_option("--servers", runner.servers, "server ids to use (default: any)")
+        ->delimiter(',');
+    cmd->add_option("--parallel", runner.parallel, "games at once")->check(CLI::PositiveNumber);
+    cmd->add_option("--lcm-url", runner.lcm_url, "LCM provider URL");
+    cmd->add_option("--log-dir", runner.log_dir, "policy workers' logs");
+    cmd->add_flag("--quiet", quiet, "no progress bar");
+  }
+
   std::string svg;
   bool json = false;
   auto* table = app.add_subcommand("table", "print a tournament's table (and plot its ratings)");
@@ -109,18 +140,33 @@ int main(int argc, char** argv) {
       }
       return 0;
     }
-    if (*run) {
+    if (*run || *sp) {
       spec.name = name;
+      if (*sp) {
+        spec.format = "selfplay";
+        selfplay.lag = runner.parallel;
+        spec.options = selfplay.to_json().dump();
+      }
       if (auto existing = store.find_tournament(name)) {
-        std::fprintf(stderr, "resuming tournament %s\n", name.c_str());
+        std::fprintf(stderr, "resuming %s\n", name.c_str());
         spec = *existing;
       } else {
-        spec.entrants = parse_entrants(entrants);
+        spec.entrants = *sp ? (bots.empty() ? std::vector<Entrant>{} : parse_entrants(bots, 1))
+                            : parse_entrants(entrants, 2);
         store.create_tournament(spec);
       }
       runner.agent_program = agent_next_to_me();
       runner.progress = !quiet;
-      TournamentRunner(store, spec, runner).run();
+      std::unique_ptr<Scheduler> scheduler;
+      if (spec.format == "selfplay") {
+        auto options = SelfplayOptions::from_json(spec.options);
+        runner.parallel = options.lag;  // decisions depend on it: keep the run's own
+        scheduler = std::make_unique<SelfplayScheduler>(options);
+      } else {
+        scheduler = make_tournament_scheduler();
+      }
+      TournamentRunner(store, spec, runner, std::move(scheduler)).run();
+      spec = *store.find_tournament(name);
     }
     auto t = store.find_tournament(name);
     if (!t) throw std::invalid_argument("no tournament \"" + name + "\" in " + db);

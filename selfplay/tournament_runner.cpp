@@ -9,7 +9,6 @@
 #include "olympics/match_request_t.hpp"
 #include "olympics/match_result_t.hpp"
 #include "olympics/server_announce_t.hpp"
-#include "tournament.h"
 #include "version.h"
 
 namespace olympics::selfplay {
@@ -18,8 +17,10 @@ constexpr auto kRequestResend = std::chrono::milliseconds(250);
 constexpr auto kProbeInterval = std::chrono::seconds(1);
 }  // namespace
 
-TournamentRunner::TournamentRunner(LeagueStore& store, TournamentSpec spec, RunnerSettings settings)
-    : store_(store),
+TournamentRunner::TournamentRunner(LeagueStore& store, TournamentSpec spec, RunnerSettings settings,
+                                   std::unique_ptr<Scheduler> scheduler)
+    : scheduler_(std::move(scheduler)),
+      store_(store),
       spec_(std::move(spec)),
       settings_(std::move(settings)),
       transport_({settings_.lcm_url}) {
@@ -58,38 +59,23 @@ void TournamentRunner::on_announce(const std::uint8_t* data, int size) {
   servers_[a->server_id] = {Clock::now(), a->capacity - a->active_matches};
 }
 
-// Schedules the next round when every game so far is done; false when the tournament is over.
-bool TournamentRunner::schedule_next_round() {
-  const int n = static_cast<int>(spec_.entrants.size());
+// Asks the scheduler for more games when another could start; false once it has finished and
+// every game is done.
+bool TournamentRunner::schedule_more() {
+  int open = 0;
+  for (const auto& g : games_) open += g.status != GameStatus::Done;
+  if (open >= settings_.parallel) return true;
   std::vector<Pairing> pairs;
-  if (games_.empty() && (spec_.format == "round-robin" || spec_.format == "double-round-robin")) {
-    pairs = round_robin(n, spec_.format == "double-round-robin");
-  } else if (spec_.format == "swiss" || spec_.format == "knockout") {
-    std::vector<GameResult> results;
-    int rounds = 0;
-    for (const auto& g : games_) {
-      results.push_back({g.home, g.away, g.home_score});
-      rounds = std::max(rounds, g.round + 1);
-    }
-    if (spec_.format == "swiss") {
-      if (rounds >= swiss_round_count(n)) return false;
-      pairs = swiss_round(n, rounds, results);
-    } else {
-      std::vector<int> survivors;
-      if (rounds == 0) {
-        for (int i = 0; i < n; ++i) survivors.push_back(i);
-      } else {
-        for (const auto& r : results)
-          if (games_[&r - results.data()].round == rounds - 1)
-            survivors.push_back(knockout_winner(r));
-        std::sort(survivors.begin(), survivors.end());  // seed order
-      }
-      if (survivors.size() <= 1) return false;
-      pairs = knockout_round(survivors, rounds);
-    }
-  } else {
-    return false;
+  const size_t entrants_before = spec_.entrants.size();
+  switch (scheduler_->schedule(spec_, games_, pairs)) {
+    case Scheduler::Verdict::Finished:
+      return open > 0;
+    case Scheduler::Verdict::Wait:
+      return true;
+    case Scheduler::Verdict::Added:
+      break;
   }
+  if (spec_.entrants.size() != entrants_before) store_.update_entrants(spec_);
   std::vector<Game> added;
   for (const auto& p : pairs) {
     Game g;
@@ -245,9 +231,7 @@ void TournamentRunner::show_progress() {
 void TournamentRunner::run() {
   started_ = Clock::now();
   for (;;) {
-    bool open = false;
-    for (const auto& g : games_) open = open || g.status != GameStatus::Done;
-    if (!open && !schedule_next_round()) break;
+    if (!schedule_more()) break;
     dispatch();
     keep_in_touch();
     transport_.handle(10);

@@ -1,5 +1,5 @@
-// Plays a tournament to its end over the olympics-servers on the LCM network: schedules games
-// (all rounds of a round robin at once; Swiss and knockout round by round), dispatches each to a
+// Plays a tournament or a self-play run to its end over the olympics-servers on the LCM network:
+// takes games from its Scheduler (tournament rounds, or matchmaking), dispatches each to a
 // server with room (from the servers' announcements), starts a policy worker (olympics-agent)
 // per slot, records every result, and retries a game whose server died or cancelled it. Every
 // step is written to the LeagueStore before it is taken, so a killed league resumes.
@@ -13,6 +13,7 @@
 
 #include "league_store.h"
 #include "process.h"
+#include "scheduler.h"
 #include "transport.h"
 
 namespace olympics::selfplay {
@@ -29,7 +30,8 @@ struct RunnerSettings {
 
 class TournamentRunner {
  public:
-  TournamentRunner(LeagueStore& store, TournamentSpec spec, RunnerSettings settings);
+  TournamentRunner(LeagueStore& store, TournamentSpec spec, RunnerSettings settings,
+                   std::unique_ptr<Scheduler> scheduler);
   ~TournamentRunner();
   // Returns when every game has a result.
   void run();
@@ -46,7 +48,7 @@ class TournamentRunner {
     std::vector<std::unique_ptr<Process>> workers;
   };
 
-  bool schedule_next_round();
+  bool schedule_more();
   void dispatch();
   void on_created(const std::uint8_t* data, int size);
   void on_result(const std::uint8_t* data, int size);
@@ -58,6 +60,7 @@ class TournamentRunner {
   void show_progress();
   Game* game_by_request(const std::string& request_id);
 
+  std::unique_ptr<Scheduler> scheduler_;
   LeagueStore& store_;
   TournamentSpec spec_;
   RunnerSettings settings_;

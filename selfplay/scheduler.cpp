@@ -1,0 +1,51 @@
+#include "scheduler.h"
+
+#include <algorithm>
+
+namespace olympics::selfplay {
+namespace {
+
+class TournamentScheduler : public Scheduler {
+ public:
+  Verdict schedule(TournamentSpec& spec, const std::vector<Game>& games,
+                   std::vector<Pairing>& out) override {
+    for (const auto& g : games)
+      if (g.status != GameStatus::Done) return Verdict::Wait;  // rounds start together
+    const int n = static_cast<int>(spec.entrants.size());
+    if (spec.format == "round-robin" || spec.format == "double-round-robin") {
+      if (!games.empty()) return Verdict::Finished;
+      out = round_robin(n, spec.format == "double-round-robin");
+      return Verdict::Added;
+    }
+    std::vector<GameResult> results;
+    int rounds = 0;
+    for (const auto& g : games) {
+      results.push_back({g.home, g.away, g.home_score});
+      rounds = std::max(rounds, g.round + 1);
+    }
+    if (spec.format == "swiss") {
+      if (rounds >= swiss_round_count(n)) return Verdict::Finished;
+      out = swiss_round(n, rounds, results);
+      return Verdict::Added;
+    }
+    std::vector<int> survivors;  // knockout
+    if (rounds == 0) {
+      for (int i = 0; i < n; ++i) survivors.push_back(i);
+    } else {
+      for (size_t i = 0; i < games.size(); ++i)
+        if (games[i].round == rounds - 1) survivors.push_back(knockout_winner(results[i]));
+      std::sort(survivors.begin(), survivors.end());  // seed order
+    }
+    if (survivors.size() <= 1) return Verdict::Finished;
+    out = knockout_round(survivors, rounds);
+    return Verdict::Added;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Scheduler> make_tournament_scheduler() {
+  return std::make_unique<TournamentScheduler>();
+}
+
+}  // namespace olympics::selfplay

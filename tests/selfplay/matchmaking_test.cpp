@@ -1,0 +1,89 @@
+#include "matchmaking.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+namespace olympics::selfplay {
+namespace {
+
+// Entrants: 0, 1 bots; 2, 3, 4 snapshots v1..v3 (4 is the latest).
+Roster roster() { return {4, {3, 2}, {0, 1}}; }
+
+std::map<int, int> tally(const SelfplayOptions& o, const PayoffMatrix& payoff, int n) {
+  std::map<int, int> counts;
+  for (int game = 0; game < n; ++game) ++counts[choose_opponent(o, roster(), payoff, game, 11, {})];
+  return counts;
+}
+
+void expect_share(int count, int n, double p) {
+  const double sd = std::sqrt(n * p * (1 - p));
+  EXPECT_NEAR(count, n * p, 4 * sd + 1e-9);
+}
+
+TEST(Matchmaking, LatestPlaysItself) {
+  SelfplayOptions o;
+  o.strategy = "latest";
+  EXPECT_EQ(tally(o, PayoffMatrix(5), 100)[4], 100);
+}
+
+TEST(Matchmaking, MlAgentsPlaysLatestWithRatioElseTheWindow) {
+  SelfplayOptions o;
+  o.strategy = "mlagents:0.3";
+  const int n = 4000;
+  auto c = tally(o, PayoffMatrix(5), n);
+  expect_share(c[4], n, 0.3);
+  expect_share(c[3], n, 0.35);
+  expect_share(c[2], n, 0.35);
+  EXPECT_EQ(c[0] + c[1], 0);
+}
+
+TEST(Matchmaking, BotShareComesFirst) {
+  SelfplayOptions o;
+  o.strategy = "latest";
+  o.bot_share = 0.2;
+  const int n = 4000;
+  auto c = tally(o, PayoffMatrix(5), n);
+  expect_share(c[0], n, 0.1);
+  expect_share(c[1], n, 0.1);
+  expect_share(c[4], n, 0.8);
+}
+
+TEST(Matchmaking, PfspFollowsThePayoff) {
+  PayoffMatrix payoff(5, 1.0);
+  for (int k = 0; k < 4; ++k)
+    payoff.record(4, 3, 0.0), payoff.record(4, 2, 1.0);  // loses to v2, beats v1
+  SelfplayOptions o;
+  o.strategy = "pfsp:hard";
+  const int n = 4000;
+  auto c = tally(o, payoff, n);
+  // weights: v2 (1-0)^2 = 1, v1 (1-1)^2 = 0, bots unknown 0.5 -> 0.25 each; total 1.5
+  expect_share(c[3], n, 1 / 1.5);
+  EXPECT_EQ(c[2], 0);
+  expect_share(c[0], n, 0.25 / 1.5);
+}
+
+TEST(Matchmaking, AlternatingFreezesTheOpponentPerBlock) {
+  SelfplayOptions o;
+  o.strategy = "alternating:3";
+  std::vector<Game> games;
+  Game first;
+  first.home = 4, first.away = 2;  // the block's first game froze entrant 2
+  games.push_back(first);
+  EXPECT_EQ(choose_opponent(o, roster(), PayoffMatrix(5), 1, 1, games), 2);
+  EXPECT_EQ(choose_opponent(o, roster(), PayoffMatrix(5), 2, 1, games), 2);
+  EXPECT_EQ(choose_opponent(o, roster(), PayoffMatrix(5), 3, 1, games), 4);  // a new block
+}
+
+TEST(Matchmaking, UnknownStrategyAndVersions) {
+  SelfplayOptions o;
+  o.strategy = "roulette";
+  EXPECT_THROW(choose_opponent(o, roster(), PayoffMatrix(5), 0, 1, {}), std::invalid_argument);
+  EXPECT_EQ(snapshot_version("policy-v12.safetensors"), 12);
+  EXPECT_EQ(snapshot_version("v3.safetensors"), 3);
+  EXPECT_EQ(snapshot_version("notes.txt"), -1);
+}
+
+}  // namespace
+}  // namespace olympics::selfplay
