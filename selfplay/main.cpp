@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
   run->add_option("--entrants", entrants, "zero, random[:seed], mlp:<snapshot>; comma separated")
       ->delimiter(',');
   run->add_option("--sport", spec.sport, "sport");
-  run->add_option("--mode", spec.mode, "mode (1v1 today)");
+  run->add_option("--mode", spec.mode, "two-team mode: 1v1, 2v2, ...");
   run->add_option("--seed", spec.seed, "tournament seed (match seeds derive from it)");
   run->add_option("--time-limit", spec.time_limit_s, "seconds per match (0: the sport's default)");
   run->add_option("--servers", runner.servers, "server ids to use (default: any)")->delimiter(',');
@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
   sp->add_option("--matches", selfplay.matches, "games to play")->check(CLI::PositiveNumber);
   for (auto* cmd : {sp}) {
     cmd->add_option("--sport", spec.sport, "sport");
-    cmd->add_option("--mode", spec.mode, "mode (1v1 today)");
+    cmd->add_option("--mode", spec.mode, "two-team mode: 1v1, 2v2, ...");
     cmd->add_option("--seed", spec.seed, "seed (match seeds and decisions derive from it)");
     cmd->add_option("--time-limit", spec.time_limit_s,
                     "seconds per match (0: the sport's default)");
@@ -151,6 +151,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "resuming %s\n", name.c_str());
         spec = *existing;
       } else {
+        team_slots(spec.mode, 0);  // refuses modes the league cannot play, before storing anything
         spec.entrants = *sp ? (bots.empty() ? std::vector<Entrant>{} : parse_entrants(bots, 1))
                             : parse_entrants(entrants, 2);
         store.create_tournament(spec);

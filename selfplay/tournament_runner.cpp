@@ -17,6 +17,20 @@ constexpr auto kRequestResend = std::chrono::milliseconds(250);
 constexpr auto kProbeInterval = std::chrono::seconds(1);
 }  // namespace
 
+std::string team_slots(const std::string& mode, int team) {
+  const auto v = mode.find('v');
+  const int size = v == std::string::npos ? 0 : std::atoi(mode.substr(0, v).c_str());
+  if (size < 1 || mode != std::to_string(size) + "v" + std::to_string(size))
+    throw std::invalid_argument("the league plays two-team modes (1v1, 2v2, ...), not \"" + mode +
+                                "\"");
+  std::string slots;
+  for (int k = 0; k < size; ++k) {
+    if (k) slots += ',';
+    slots += std::to_string(team * size + k);
+  }
+  return slots;
+}
+
 TournamentRunner::TournamentRunner(LeagueStore& store, TournamentSpec spec, RunnerSettings settings,
                                    std::unique_ptr<Scheduler> scheduler)
     : scheduler_(std::move(scheduler)),
@@ -165,13 +179,13 @@ void TournamentRunner::start_workers(Game& g) {
   InFlight& f = in_flight_[g.index];
   f.workers_started = true;
   f.last_request = Clock::now();
-  for (int slot = 0; slot < 2; ++slot) {
-    const Entrant& e = spec_.entrants[slot == 0 ? g.home : g.away];
+  for (int team = 0; team < 2; ++team) {
+    const Entrant& e = spec_.entrants[team == 0 ? g.home : g.away];
     std::vector<std::string> argv = {settings_.agent_program,
                                      "--match",
                                      g.match_id,
                                      "--slots",
-                                     std::to_string(slot),
+                                     team_slots(spec_.mode, team),
                                      "--policy",
                                      e.policy,
                                      "--policy-seed",
@@ -184,7 +198,7 @@ void TournamentRunner::start_workers(Game& g) {
                                      "60"};
     if (!settings_.lcm_url.empty()) argv.insert(argv.end(), {"--lcm-url", settings_.lcm_url});
     f.workers.push_back(std::make_unique<Process>(
-        argv, settings_.log_dir + "/" + g.match_id + "-slot" + std::to_string(slot) + ".log"));
+        argv, settings_.log_dir + "/" + g.match_id + "-team" + std::to_string(team) + ".log"));
   }
 }
 

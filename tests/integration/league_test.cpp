@@ -179,6 +179,34 @@ TEST(League, AGameOnAServerThatDiesIsPlayedAgainElsewhere) {
   EXPECT_GE(retried, 1);
 }
 
+TEST(League, TwoVersusTwoEachEntrantPlaysItsWholeTeam) {
+  TwoServers servers;
+  const std::string dir = temp_dir(), db = dir + "/league.db";
+  Process run({program("olympics-league"), "run", "--db", db, "--name", "doubles", "--format",
+               "round-robin", "--mode", "2v2", "--entrants", "zero,random:1,random:2",
+               "--time-limit", "3", "--lcm-url", servers.url, "--log-dir", temp_dir(), "--quiet"},
+              dir + "/league.log");
+  ASSERT_EQ(run.wait(120), 0) << run.output();
+  selfplay::LeagueStore store(db);
+  auto spec = *store.find_tournament("doubles");
+  auto alpha = servers.a.store(), beta = servers.b.store();
+  for (const auto& g : store.games("doubles")) {
+    auto record = g.server_id == "alpha" ? alpha.find(g.match_id) : beta.find(g.match_id);
+    ASSERT_TRUE(record);
+    ASSERT_EQ(record->participants.size(), 4u);
+    for (int slot = 0; slot < 4; ++slot)
+      EXPECT_EQ(record->participants[slot].agent, spec.entrants[slot < 2 ? g.home : g.away].name);
+    EXPECT_EQ(record->mode, "2v2");
+  }
+  Process ffa({program("olympics-league"), "run", "--db", db, "--name", "ffa", "--mode", "ffa4",
+               "--entrants", "zero,zero", "--lcm-url", servers.url},
+              dir + "/ffa.log");
+  EXPECT_EQ(ffa.wait(20), 2);
+  EXPECT_NE(ffa.output().find("the league plays two-team modes (1v1, 2v2, ...), not \"ffa4\""),
+            std::string::npos)
+      << ffa.output();
+}
+
 // A one-layer MLP snapshot (366 -> 69, tanh output) with small deterministic weights.
 void write_snapshot(const std::string& path, int version) {
   const int in = 366, out = 69;
