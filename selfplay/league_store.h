@@ -1,14 +1,17 @@
-// The league's state in SQLite: tournaments and every game with its progress, written before
-// each step is taken, so a league killed at any moment (kill -9) resumes where it was.
+// The league's state in SQL (a SQLite file, or PostgreSQL by URL): tournaments and every game with
+// its progress, written before each step is taken, so a league killed at any moment (kill -9)
+// resumes where it was.
 #pragma once
 
-#include <sqlite3.h>
-
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace olympics::selfplay {
+
+class SqlDatabase;
 
 struct Entrant {
   std::string name;    // unique in the tournament
@@ -43,7 +46,7 @@ struct Game {
 
 class LeagueStore {
  public:
-  explicit LeagueStore(const std::string& path);  // throws with what to check
+  explicit LeagueStore(const std::string& location);  // throws with what to check
   ~LeagueStore();
   LeagueStore(const LeagueStore&) = delete;
   LeagueStore& operator=(const LeagueStore&) = delete;
@@ -57,9 +60,7 @@ class LeagueStore {
   void update_game(const std::string& tournament, const Game& game);
 
  private:
-  void exec(const std::string& sql);
-  sqlite3* db_ = nullptr;
-  std::string path_;
+  std::unique_ptr<SqlDatabase> db_;
 };
 
 }  // namespace olympics::selfplay

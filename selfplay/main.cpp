@@ -69,8 +69,9 @@ int main(int argc, char** argv) {
   TournamentSpec spec;
   RunnerSettings runner;
   std::vector<std::string> entrants;
+  spec.format = "round-robin";
   auto* run = app.add_subcommand("run", "play (or resume) a tournament to its end");
-  run->add_option("--db", db, "league database (SQLite)");
+  run->add_option("--db", db, "league state: SQLite file or postgresql:// URL");
   run->add_option("--name", name, "tournament name (resumes it if it exists)")->required();
   run->add_option("--format", spec.format, "round-robin, double-round-robin, swiss, knockout")
       ->check(CLI::IsMember({"round-robin", "double-round-robin", "swiss", "knockout"}));
@@ -91,7 +92,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> bots;
   auto* sp =
       app.add_subcommand("selfplay", "the learner's snapshots against opponents by a strategy");
-  sp->add_option("--db", db, "league database (SQLite)");
+  sp->add_option("--db", db, "league state: SQLite file or postgresql:// URL");
   sp->add_option("--name", name, "run name (resumes it if it exists)")->required();
   sp->add_option("--snapshots", selfplay.snapshots_dir,
                  "where the learner writes *v<N>.safetensors")

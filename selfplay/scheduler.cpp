@@ -1,6 +1,7 @@
 #include "scheduler.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace olympics::selfplay {
 namespace {
@@ -28,7 +29,10 @@ class TournamentScheduler : public Scheduler {
       out = swiss_round(n, rounds, results);
       return Verdict::Added;
     }
-    std::vector<int> survivors;  // knockout
+    if (spec.format != "knockout")
+      throw std::invalid_argument("unknown tournament format \"" + spec.format +
+                                  "\"; formats: round-robin, double-round-robin, swiss, knockout");
+    std::vector<int> survivors;
     if (rounds == 0) {
       for (int i = 0; i < n; ++i) survivors.push_back(i);
     } else {

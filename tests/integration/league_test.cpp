@@ -1,7 +1,9 @@
 // The league over real servers: a round robin of four bots on two servers, checked against the
 // servers' own match records; and a league killed with SIGKILL mid-tournament that resumes to
 // the same final table as an uninterrupted run.
+#include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -86,14 +88,22 @@ TEST(League, RoundRobinOfFourBotsOnTwoServersMatchesTheServersRecords) {
   }
 }
 
-TEST(League, KilledWithSigkillResumesToTheSameFinalTable) {
+// The league's state in SQLite, or in a real PostgreSQL server (OLYMPICS_TEST_POSTGRES_URL, which
+// CI sets): killed with SIGKILL mid-tournament and resumed, the same final table.
+class LeagueState : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(LeagueState, KilledWithSigkillResumesToTheSameFinalTable) {
+  const char* pg = std::getenv("OLYMPICS_TEST_POSTGRES_URL");
+  if (GetParam() == "postgresql" && !pg) GTEST_SKIP() << "set OLYMPICS_TEST_POSTGRES_URL (CI does)";
   TwoServers servers;
   const std::string dir = temp_dir();
   auto reference = league(servers, dir + "/a.db", "whole", dir + "/a.log");
   ASSERT_EQ(reference->wait(120), 0) << reference->output();
 
-  const std::string db = dir + "/b.db";
-  auto first = league(servers, db, "interrupted", dir + "/b1.log");
+  const std::string db = GetParam() == "postgresql" ? std::string(pg) : dir + "/b.db";
+  const std::string name =
+      "interrupted-" + std::to_string(std::chrono::system_clock::now().time_since_epoch().count());
+  auto first = league(servers, db, name, dir + "/b1.log");
   // Kill it once some, but not all, games are done.
   bool killed = false;
   for (int i = 0; i < 2000 && !killed; ++i) {
@@ -101,7 +111,7 @@ TEST(League, KilledWithSigkillResumesToTheSameFinalTable) {
     try {
       selfplay::LeagueStore peek(db);
       int done = 0;
-      for (const auto& g : peek.games("interrupted")) done += g.status == GameStatus::Done;
+      for (const auto& g : peek.games(name)) done += g.status == GameStatus::Done;
       if (done >= 2) {
         first->signal(SIGKILL);
         killed = true;
@@ -114,17 +124,16 @@ TEST(League, KilledWithSigkillResumesToTheSameFinalTable) {
   {
     selfplay::LeagueStore peek(db);
     int done = 0;
-    for (const auto& g : peek.games("interrupted")) done += g.status == GameStatus::Done;
+    for (const auto& g : peek.games(name)) done += g.status == GameStatus::Done;
     EXPECT_LT(done, 6) << "the league finished before it could be killed";
   }
-  auto second = league(servers, db, "interrupted", dir + "/b2.log");
+  auto second = league(servers, db, name, dir + "/b2.log");
   ASSERT_EQ(second->wait(120), 0) << second->output();
-  EXPECT_NE(second->output().find("resuming interrupted"), std::string::npos);
+  EXPECT_NE(second->output().find("resuming " + name), std::string::npos);
 
   selfplay::LeagueStore a(dir + "/a.db"), b(db);
   auto board_a = selfplay::compute_leaderboard(*a.find_tournament("whole"), a.games("whole"));
-  auto board_b =
-      selfplay::compute_leaderboard(*b.find_tournament("interrupted"), b.games("interrupted"));
+  auto board_b = selfplay::compute_leaderboard(*b.find_tournament(name), b.games(name));
   ASSERT_EQ(board_a.rows.size(), board_b.rows.size());
   for (size_t i = 0; i < board_a.rows.size(); ++i) {
     EXPECT_EQ(board_a.rows[i].name, board_b.rows[i].name);
@@ -133,10 +142,12 @@ TEST(League, KilledWithSigkillResumesToTheSameFinalTable) {
     EXPECT_EQ(board_a.rows[i].elo, board_b.rows[i].elo);
   }
   // No game counted twice: six games, each done once.
-  auto games = b.games("interrupted");
+  auto games = b.games(name);
   ASSERT_EQ(games.size(), 6u);
   for (const auto& g : games) EXPECT_EQ(g.status, GameStatus::Done);
 }
+
+INSTANTIATE_TEST_SUITE_P(Backends, LeagueState, ::testing::Values("sqlite", "postgresql"));
 
 TEST(League, AGameOnAServerThatDiesIsPlayedAgainElsewhere) {
   TwoServers servers;
