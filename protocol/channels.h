@@ -14,6 +14,7 @@ inline constexpr const char* kStart = "OLY_START";
 inline constexpr const char* kResult = "OLY_RESULT";
 inline constexpr const char* kError = "OLY_ERROR";
 inline constexpr const char* kHeartbeat = "OLY_HEARTBEAT";
+inline constexpr const char* kLeague = "OLY_LEAGUE";
 inline constexpr const char* kObsPrefix = "OLY_OBS_";
 inline constexpr const char* kActPrefix = "OLY_ACT_";
 

@@ -38,12 +38,16 @@ std::vector<Entrant> parse_entrants(const std::vector<std::string>& specs, size_
       e.policy = spec;
       std::string stem = file.substr(file.rfind('/') + 1);
       e.name = "mlp-" + stem.substr(0, stem.find('.'));
+    } else if (e.policy == "live" && colon != std::string::npos) {
+      e.policy = spec;  // a trainer's own client plays it (olympics-agent --learner, or Python)
+      e.name = spec.substr(colon + 1);
     } else if (e.policy == "zero" || e.policy == "random") {
       e.seed = colon == std::string::npos ? 1 : std::stoull(spec.substr(colon + 1));
       e.name = colon == std::string::npos ? e.policy : e.policy + "-" + spec.substr(colon + 1);
     } else {
-      throw std::invalid_argument("unknown entrant \"" + spec +
-                                  "\"; entrants: zero, random[:seed], mlp:<snapshot.safetensors>");
+      throw std::invalid_argument(
+          "unknown entrant \"" + spec +
+          "\"; entrants: zero, random[:seed], mlp:<snapshot.safetensors>, live:<learner>");
     }
     if (int n = ++seen[e.name]; n > 1) e.name += "-" + std::to_string(n);
     out.push_back(e);
@@ -75,7 +79,8 @@ int main(int argc, char** argv) {
   run->add_option("--name", name, "tournament name (resumes it if it exists)")->required();
   run->add_option("--format", spec.format, "round-robin, double-round-robin, swiss, knockout")
       ->check(CLI::IsMember({"round-robin", "double-round-robin", "swiss", "knockout"}));
-  run->add_option("--entrants", entrants, "zero, random[:seed], mlp:<snapshot>; comma separated")
+  run->add_option("--entrants", entrants,
+                  "zero, random[:seed], mlp:<snapshot>, live:<learner>; comma separated")
       ->delimiter(',');
   run->add_option("--sport", spec.sport, "sport");
   run->add_option("--mode", spec.mode, "two-team mode: 1v1, 2v2, ...");

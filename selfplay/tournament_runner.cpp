@@ -5,6 +5,7 @@
 
 #include "channels.h"
 #include "olympics/heartbeat_t.hpp"
+#include "olympics/league_assignment_t.hpp"
 #include "olympics/match_created_t.hpp"
 #include "olympics/match_request_t.hpp"
 #include "olympics/match_result_t.hpp"
@@ -154,6 +155,7 @@ void TournamentRunner::keep_in_touch() {
     }
     if (!g.match_id.empty() && !f.workers_started) start_workers(g);
     if (!g.match_id.empty() && now - f.last_probe >= kProbeInterval) {
+      assign_live(g);
       // Any message about a finished match makes its server say the result again.
       olympics::heartbeat_t h;
       h.protocol_version = protocol::kProtocolVersion;
@@ -179,8 +181,10 @@ void TournamentRunner::start_workers(Game& g) {
   InFlight& f = in_flight_[g.index];
   f.workers_started = true;
   f.last_request = Clock::now();
+  assign_live(g);
   for (int team = 0; team < 2; ++team) {
     const Entrant& e = spec_.entrants[team == 0 ? g.home : g.away];
+    if (e.policy.rfind("live:", 0) == 0) continue;  // a live learner joins by itself: assign_live()
     std::vector<std::string> argv = {settings_.agent_program,
                                      "--match",
                                      g.match_id,
@@ -199,6 +203,29 @@ void TournamentRunner::start_workers(Game& g) {
     if (!settings_.lcm_url.empty()) argv.insert(argv.end(), {"--lcm-url", settings_.lcm_url});
     f.workers.push_back(std::make_unique<Process>(
         argv, settings_.log_dir + "/" + g.match_id + "-team" + std::to_string(team) + ".log"));
+  }
+}
+
+// Tells the live learners among the game's entrants which match and slots to play.
+void TournamentRunner::assign_live(const Game& g) {
+  for (int team = 0; team < 2; ++team) {
+    const Entrant& e = spec_.entrants[team == 0 ? g.home : g.away];
+    if (e.policy.rfind("live:", 0) != 0) continue;
+    olympics::league_assignment_t a;
+    a.protocol_version = protocol::kProtocolVersion;
+    a.league = spec_.name;
+    a.learner = e.policy.substr(5);
+    a.game = g.index;
+    a.match_id = g.match_id;
+    const std::string slots = team_slots(spec_.mode, team);
+    for (size_t at = 0; at < slots.size();) {
+      size_t comma = slots.find(',', at);
+      a.slots.push_back(std::stoi(slots.substr(at, comma - at)));
+      at = comma == std::string::npos ? slots.size() : comma + 1;
+    }
+    a.num_slots = static_cast<int>(a.slots.size());
+    a.opponent = spec_.entrants[team == 0 ? g.away : g.home].name;
+    transport_.publish(protocol::kLeague, a);
   }
 }
 

@@ -58,6 +58,7 @@ class TournamentRunner {
   void on_result(const std::uint8_t* data, int size);
   void on_announce(const std::uint8_t* data, int size);
   void start_workers(Game& game);
+  void assign_live(const Game& game);
   void retry(Game& game, const std::string& why);
   void keep_in_touch();
   void save(const Game& game);

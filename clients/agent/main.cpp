@@ -2,6 +2,8 @@
 //
 //   olympics-agent --request-id demo --sport sandbox --mode 1v1 --slots 0 --policy zero
 //   olympics-agent --match SERVER-7 --slots 1 --policy random
+//   olympics-agent --learner alice --games 3 --policy mlp:v7.safetensors   (league entrant
+//   live:alice)
 //
 // Agents given the same --request-id share one match (the server dedupes the request), so two
 // processes can meet without passing a match id around.
@@ -14,6 +16,49 @@
 #include "match_client.h"
 #include "policies.h"
 
+namespace {
+
+void play_one(olympics::client::MatchClient& client, const std::string& match_id,
+              const std::vector<int>& slots, olympics::client::Policy& policy,
+              const std::string& agent_name, const std::string& policy_name, int think_ms,
+              double timeout_s, bool json) {
+  const auto match = client.join(match_id, slots, timeout_s);
+  std::fprintf(stderr, "%s joined %s (%s %s) slots", agent_name.c_str(), match.match_id.c_str(),
+               match.sport.c_str(), match.mode.c_str());
+  for (int s : slots) std::fprintf(stderr, " %d", s);
+  std::fprintf(stderr, " with policy %s\n", policy_name.c_str());
+
+  std::vector<std::vector<float>> actions(slots.size(), std::vector<float>(match.action_size));
+  while (auto obs = client.next(timeout_s)) {
+    if (obs->all_done()) break;
+    for (size_t i = 0; i < obs->slots.size(); ++i) policy.act(obs->obs[i], actions[i]);
+    if (think_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(think_ms));
+    client.act(obs->tick, actions);
+  }
+  const auto& r = client.wait_result(timeout_s);
+  if (json) {
+    nlohmann::json out = {
+        {"match_id", r.match_id}, {"sport", r.sport},        {"mode", r.mode},
+        {"ticks", r.ticks},       {"reason", r.reason},      {"winner_team", r.winner_team},
+        {"scores", r.scores},     {"agents", r.agent_names}, {"slot_team", r.slot_team}};
+    std::printf("%s\n", out.dump().c_str());
+  } else {
+    std::printf("match %s (%s %s) over after %d ticks (%.1f s simulated): %s\n", r.match_id.c_str(),
+                r.sport.c_str(), r.mode.c_str(), r.ticks, r.ticks / 30.0, r.reason.c_str());
+    for (int t = 0; t < r.num_teams; ++t) {
+      std::string names;
+      for (int s = 0; s < r.num_slots; ++s)
+        if (r.slot_team[s] == t) names += (names.empty() ? "" : ", ") + r.agent_names[s];
+      std::printf("  team %d (%s): %.2f%s\n", t, names.c_str(), r.scores[t],
+                  r.winner_team == t ? "  WINNER" : "");
+    }
+    if (r.winner_team < 0) std::printf("  no winner\n");
+  }
+  std::fflush(stdout);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace olympics::client;
   CLI::App app{"olympics-agent: play a match with a named policy"};
@@ -25,6 +70,8 @@ int main(int argc, char** argv) {
   bool json = false;
   double timeout_s = 60;
   int think_ms = 0;
+  std::string learner;
+  int games = 1;
   app.add_option("--match", match_id, "join this match id (else request one)");
   app.add_option("--request-id", request.request_id,
                  "request id; agents with the same id share a match");
@@ -45,6 +92,9 @@ int main(int argc, char** argv) {
   app.add_option("--timeout", timeout_s, "give up when the server is silent this long (s)");
   app.add_option("--drop-rate", options.drop_rate, "TEST ONLY: drop this share of sent datagrams");
   app.add_option("--drop-seed", options.drop_seed, "TEST ONLY: seed of the drops");
+  app.add_option("--learner", learner, "play the matches a league assigns to entrant live:NAME");
+  app.add_option("--games", games, "with --learner: how many assigned matches to play")
+      ->check(CLI::PositiveNumber);
   app.add_option("--think-ms", think_ms, "sleep this long before each action (a slow policy)");
   app.add_flag("--json", json, "print the result as JSON");
   CLI11_PARSE(app, argc, argv);
@@ -52,40 +102,19 @@ int main(int argc, char** argv) {
 
   try {
     auto policy = make_policy(policy_name, policy_seed);
+    if (!learner.empty() && options.agent_name == "agent") options.agent_name = learner;
     MatchClient client(options);
-    if (match_id.empty()) match_id = client.request_match(request, timeout_s).match_id;
-    const auto match = client.join(match_id, slots, timeout_s);
-    std::fprintf(stderr, "%s joined %s (%s %s) slots", options.agent_name.c_str(),
-                 match.match_id.c_str(), match.sport.c_str(), match.mode.c_str());
-    for (int s : slots) std::fprintf(stderr, " %d", s);
-    std::fprintf(stderr, " with policy %s\n", policy_name.c_str());
-
-    std::vector<std::vector<float>> actions(slots.size(), std::vector<float>(match.action_size));
-    while (auto obs = client.next(timeout_s)) {
-      if (obs->all_done()) break;
-      for (size_t i = 0; i < obs->slots.size(); ++i) policy->act(obs->obs[i], actions[i]);
-      if (think_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(think_ms));
-      client.act(obs->tick, actions);
-    }
-    const auto& r = client.wait_result(timeout_s);
-    if (json) {
-      nlohmann::json out = {
-          {"match_id", r.match_id}, {"sport", r.sport},        {"mode", r.mode},
-          {"ticks", r.ticks},       {"reason", r.reason},      {"winner_team", r.winner_team},
-          {"scores", r.scores},     {"agents", r.agent_names}, {"slot_team", r.slot_team}};
-      std::printf("%s\n", out.dump().c_str());
-    } else {
-      std::printf("match %s (%s %s) over after %d ticks (%.1f s simulated): %s\n",
-                  r.match_id.c_str(), r.sport.c_str(), r.mode.c_str(), r.ticks, r.ticks / 30.0,
-                  r.reason.c_str());
-      for (int t = 0; t < r.num_teams; ++t) {
-        std::string names;
-        for (int s = 0; s < r.num_slots; ++s)
-          if (r.slot_team[s] == t) names += (names.empty() ? "" : ", ") + r.agent_names[s];
-        std::printf("  team %d (%s): %.2f%s\n", t, names.c_str(), r.scores[t],
-                    r.winner_team == t ? "  WINNER" : "");
+    // One match, or (a live learner) every match the league assigns, `games` of them.
+    for (int game = 0; game < (learner.empty() ? 1 : games); ++game) {
+      if (!learner.empty()) {
+        auto assignment = client.wait_assignment(learner, std::max(timeout_s, 600.0));
+        match_id = assignment.match_id;
+        slots = assignment.slots;
       }
-      if (r.winner_team < 0) std::printf("  no winner\n");
+      if (match_id.empty()) match_id = client.request_match(request, timeout_s).match_id;
+      play_one(client, match_id, slots, *policy, options.agent_name, policy_name, think_ms,
+               timeout_s, json);
+      match_id.clear();
     }
     return 0;
   } catch (const std::exception& e) {

@@ -9,6 +9,7 @@
 #include "olympics/heartbeat_t.hpp"
 #include "olympics/join_reply_t.hpp"
 #include "olympics/join_t.hpp"
+#include "olympics/league_assignment_t.hpp"
 #include "olympics/match_request_t.hpp"
 #include "olympics/observation_batch_t.hpp"
 #include "version.h"
@@ -63,6 +64,15 @@ MatchClient::MatchClient(const ClientOptions& options)
                                         m->message.find(pending_request_id_) != std::string::npos)))
       errors_.push_back(*m);
   });
+  transport_.subscribe(protocol::kLeague, [this](const std::string&, const std::uint8_t* d, int n) {
+    auto a = protocol::decode<olympics::league_assignment_t>(d, n);
+    if (!a) return;
+    for (const auto& known : assigned_matches_)
+      if (known == a->match_id) return;
+    for (const auto& queued : assignments_)
+      if (queued.match_id == a->match_id) return;
+    assignments_.push_back({a->league, a->learner, a->match_id, a->opponent, a->game, a->slots});
+  });
   transport_.subscribe(protocol::kResult, [this](const std::string&, const std::uint8_t* d, int n) {
     auto m = protocol::decode<olympics::match_result_t>(d, n);
     if (m && joined_ && m->match_id == match_.match_id) result_ = *m;
@@ -112,6 +122,24 @@ olympics::match_created_t MatchClient::request_match(const MatchRequest& r, doub
   }
   pending_request_id_.clear();
   return *created_;
+}
+
+Assignment MatchClient::wait_assignment(const std::string& learner, double timeout_s) {
+  const auto deadline = Clock::now() + seconds(timeout_s);
+  for (;;) {
+    for (auto it = assignments_.begin(); it != assignments_.end(); ++it) {
+      if (it->learner != learner) continue;
+      Assignment a = *it;
+      assigned_matches_.push_back(a.match_id);
+      assignments_.erase(it);
+      return a;
+    }
+    if (Clock::now() >= deadline)
+      throw MatchError("TIMEOUT", "no league assigned a match to learner \"" + learner +
+                                      "\" within " + std::to_string(timeout_s) +
+                                      " s; is it an entrant (live:" + learner + ")?");
+    pump(deadline);
+  }
 }
 
 olympics::match_created_t MatchClient::join(const std::string& match_id,

@@ -39,6 +39,13 @@ struct ClientOptions {
   std::uint64_t drop_seed = 1;
 };
 
+// A league's word to a live learner: play these slots of this match.
+struct Assignment {
+  std::string league, learner, match_id, opponent;
+  int game = 0;
+  std::vector<int> slots;
+};
+
 struct MatchRequest {
   std::string sport = "sandbox";
   std::string mode = "1v1";
@@ -68,6 +75,9 @@ class MatchClient {
   const std::string& client_id() const { return client_id_; }
 
   olympics::match_created_t request_match(const MatchRequest& request, double timeout_s = 10);
+  // Waits for the league to assign a match to the live learner `learner` (an entrant
+  // "live:<learner>"); each match is handed out once.
+  Assignment wait_assignment(const std::string& learner, double timeout_s = 600);
   // Claims `slots` of a match; returns its description. Throws MatchError when refused. A client
   // may join one match after another; joining forgets the previous match.
   olympics::match_created_t join(const std::string& match_id, const std::vector<int>& slots,
@@ -106,6 +116,8 @@ class MatchClient {
   int last_action_tick_ = -1;
   std::int64_t seq_ = 0;
   std::optional<olympics::match_result_t> result_;
+  std::vector<Assignment> assignments_;  // heard, not yet handed out
+  std::vector<std::string> assigned_matches_;
   std::vector<olympics::error_t> errors_;
   Clock::time_point last_heartbeat_, last_send_;
   static constexpr double kMaxResendGapS = 0.25;

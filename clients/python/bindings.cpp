@@ -102,6 +102,25 @@ PYBIND11_MODULE(_client, m) {
           py::arg("time_limit_s") = 0.0, py::arg("realtime") = false, py::arg("request_id") = "",
           py::arg("server_id") = "", py::arg("timeout_s") = 10.0)
       .def(
+          "wait_assignment",
+          [](MatchClient& c, const std::string& learner, double timeout_s) {
+            Assignment a;
+            {
+              py::gil_scoped_release release;
+              a = c.wait_assignment(learner, timeout_s);
+            }
+            py::dict d;
+            d["league"] = a.league;
+            d["learner"] = a.learner;
+            d["game"] = a.game;
+            d["match_id"] = a.match_id;
+            d["slots"] = a.slots;
+            d["opponent"] = a.opponent;
+            return d;
+          },
+          py::arg("learner"), py::arg("timeout_s") = 600.0,
+          "wait until a league assigns this live learner (entrant live:<learner>) a match")
+      .def(
           "join",
           [](MatchClient& c, const std::string& match_id, const std::vector<int>& slots,
              double timeout_s) {

@@ -218,6 +218,35 @@ TEST(League, TwoVersusTwoEachEntrantPlaysItsWholeTeam) {
       << ffa.output();
 }
 
+TEST(League, ALiveLearnerPlaysTheMatchesTheLeagueAssignsIt) {
+  TwoServers servers;
+  const std::string dir = temp_dir(), db = dir + "/league.db";
+  // The trainer's own client: it waits for assignments to entrant live:alice and plays two.
+  Process alice({program("olympics-agent"), "--lcm-url", servers.url, "--learner", "alice",
+                 "--games", "2", "--policy", "random", "--json"},
+                dir + "/alice.log");
+  Process run({program("olympics-league"), "run", "--db", db, "--name", "live", "--entrants",
+               "live:alice,zero,random:2", "--time-limit", "3", "--lcm-url", servers.url,
+               "--log-dir", temp_dir(), "--quiet"},
+              dir + "/league.log");
+  ASSERT_EQ(run.wait(120), 0) << run.output();
+  ASSERT_EQ(alice.wait(30), 0) << alice.output();
+  selfplay::LeagueStore store(db);
+  auto spec = *store.find_tournament("live");
+  int alice_games = 0;
+  auto a = servers.a.store(), b = servers.b.store();
+  for (const auto& g : store.games("live")) {
+    auto record = g.server_id == "alpha" ? a.find(g.match_id) : b.find(g.match_id);
+    ASSERT_TRUE(record);
+    for (int team = 0; team < 2; ++team)
+      if (spec.entrants[team == 0 ? g.home : g.away].name == "alice") {
+        ++alice_games;
+        EXPECT_EQ(record->participants[team].agent, "alice");  // really played by the learner
+      }
+  }
+  EXPECT_EQ(alice_games, 2);
+}
+
 // A one-layer MLP snapshot (366 -> 69, tanh output) with small deterministic weights.
 void write_snapshot(const std::string& path, int version) {
   const int in = 366, out = 69;

@@ -75,6 +75,21 @@ class EnvAgainstRealServer(unittest.TestCase):
             ids.add(env.result["match_id"])
         self.assertEqual(len(ids), 2)
 
+    def test_a_live_learner_plays_what_the_league_assigns(self):
+        league = subprocess.Popen([f"{BIN}/olympics-league", "run", "--db", os.path.join(self.dir, "league.db"),
+                                   "--name", "live", "--entrants", "live:torch,zero", "--time-limit", "2",
+                                   "--lcm-url", self.url, "--log-dir", self.dir, "--quiet"],
+                                  stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        env = OlympicsParallelEnv(learner="torch", lcm_url=self.url, agent_name="torch")
+        observations, _ = env.reset()
+        self.assertEqual(env.assignment["opponent"], "zero")
+        while env.agents:
+            env.step({a: np.zeros(69, dtype=np.float32) for a in env.agents})
+        out, _ = league.communicate(timeout=60)
+        self.assertEqual(league.returncode, 0, out)
+        self.assertIn("torch", out)
+        self.assertEqual(env.result["agent_names"][env.assignment["slots"][0]], "torch")
+
     def test_errors_reach_python(self):
         env = OlympicsParallelEnv(sport="curling", lcm_url=self.url)
         with self.assertRaises(MatchError) as caught:

@@ -19,12 +19,14 @@ class OlympicsParallelEnv:
 
     def __init__(self, sport="sandbox", mode="1v1", slots=None, match_id=None, request_id=None,
                  time_limit_s=0.0, realtime=False, lcm_url="", agent_name="python",
-                 policy_id="", policy_version="", server_id="", timeout_s=60.0):
+                 policy_id="", policy_version="", server_id="", timeout_s=60.0, learner=None):
         self.sport, self.mode = sport, mode
         self.slots = None if slots is None else sorted(slots)
         self.match_id, self.request_id = match_id, request_id
         self.time_limit_s, self.realtime, self.server_id = time_limit_s, realtime, server_id
         self.timeout_s = timeout_s
+        self.learner = learner  # a league entrant live:<learner>: reset() plays what the league assigns
+        self.assignment = None
         self._client = MatchClient(lcm_url, agent_name, policy_id, policy_version)
         self._episode = itertools.count()
         self._tick = None
@@ -53,7 +55,10 @@ class OlympicsParallelEnv:
         (n = 0, 1, ... per reset), so an opponent process given the same id meets this env.
         """
         match_id, slots = self.match_id, self.slots
-        if match_id is None:
+        if self.learner is not None:
+            self.assignment = self._client.wait_assignment(self.learner, max(self.timeout_s, 600.0))
+            match_id, slots = self.assignment["match_id"], self.assignment["slots"]
+        elif match_id is None:
             episode = next(self._episode)
             base = self.request_id if self.request_id is not None else self._client.client_id
             created = self._client.request_match(
