@@ -3,7 +3,7 @@
 # PostgreSQL-backed tests, makes sure LCM has a multicast route, and runs every test with ctest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash deploy/install-debian-deps.sh
+bash deploy/install-debian-deps.sh --tests
 bash deploy/build.sh
 bash deploy/multicast-route.sh
 OLYMPICS_TEST_POSTGRES_URL=$(bash deploy/start-test-postgres.sh | tail -1)

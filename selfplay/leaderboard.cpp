@@ -12,6 +12,7 @@ Leaderboard compute_leaderboard(const TournamentSpec& spec, const std::vector<Ga
   std::vector<double> elo(n, 1500);
   std::vector<GameResult> results;
   Leaderboard board;
+  board.payoff = PayoffMatrix(n);
   board.mu_history.assign(n, {});
   for (int i = 0; i < n; ++i) board.mu_history[i].push_back(skill[i].mu);
   for (const auto& g : games) {  // in game order, whatever order they finished in
@@ -22,6 +23,7 @@ Leaderboard compute_leaderboard(const TournamentSpec& spec, const std::vector<Ga
     const int home_rank = g.home_score > 0.5 ? 0 : 1, away_rank = g.home_score < 0.5 ? 0 : 1;
     auto rated = rate_match({{skill[g.home]}, {skill[g.away]}}, {home_rank, away_rank});
     skill[g.home] = rated[0][0], skill[g.away] = rated[1][0];
+    board.payoff.record(g.home, g.away, g.home_score);
     auto e = elo_update(elo[g.home], elo[g.away], g.home_score);
     elo[g.home] = e.a, elo[g.away] = e.b;
     for (int i = 0; i < n; ++i) board.mu_history[i].push_back(skill[i].mu);
@@ -43,6 +45,32 @@ std::string format_table(const Leaderboard& board) {
                   place++, r.name.c_str(), r.standing.points, r.standing.wins, r.standing.draws,
                   r.standing.losses, r.standing.byes, r.skill.mu, r.skill.ordinal(), r.elo);
     out << line;
+  }
+  return out.str();
+}
+
+std::string format_payoff(const TournamentSpec& spec, const Leaderboard& board) {
+  std::ostringstream out;
+  char cell[64];
+  out << "payoff: row's decayed win rate against column (draw = half; - never met)\n";
+  std::snprintf(cell, sizeof cell, "%-16s", "");
+  out << cell;
+  for (const auto& e : spec.entrants) {
+    std::snprintf(cell, sizeof cell, " %10.10s", e.name.c_str());
+    out << cell;
+  }
+  out << "\n";
+  for (int a = 0; a < board.payoff.size(); ++a) {
+    std::snprintf(cell, sizeof cell, "%-16s", spec.entrants[a].name.c_str());
+    out << cell;
+    for (int b = 0; b < board.payoff.size(); ++b) {
+      if (a == b || board.payoff.games(a, b) == 0)
+        std::snprintf(cell, sizeof cell, " %10s", "-");
+      else
+        std::snprintf(cell, sizeof cell, " %10.2f", board.payoff.win_rate(a, b));
+      out << cell;
+    }
+    out << "\n";
   }
   return out.str();
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "league_store.h"
+#include "payoff.h"
 #include "ratings.h"
 #include "tournament.h"
 
@@ -21,11 +22,14 @@ struct TableRow {
 
 struct Leaderboard {
   std::vector<TableRow> rows;                   // table order
+  PayoffMatrix payoff;                          // by entrant index, decay 0.99
   std::vector<std::vector<double>> mu_history;  // per entrant, after each finished game
 };
 
 Leaderboard compute_leaderboard(const TournamentSpec& spec, const std::vector<Game>& games);
 std::string format_table(const Leaderboard& board);
+// The payoff matrix: each row entrant's decayed win rate against each column ("-": never met).
+std::string format_payoff(const TournamentSpec& spec, const Leaderboard& board);
 // An SVG line chart of every entrant's Weng-Lin mu after each game.
 std::string ratings_svg(const TournamentSpec& spec, const Leaderboard& board);
 

@@ -129,6 +129,8 @@ int main(int argc, char** argv) {
   table->add_option("--name", name, "tournament name")->required();
   table->add_option("--svg", svg, "write the ratings over time to this SVG file");
   table->add_flag("--json", json, "JSON instead of a table");
+  bool payoff = false;
+  table->add_flag("--payoff", payoff, "also print the payoff matrix");
   auto* list = app.add_subcommand("list", "list the tournaments");
   list->add_option("--db", db, "league database");
   CLI11_PARSE(app, argc, argv);
@@ -193,6 +195,7 @@ int main(int argc, char** argv) {
       std::printf("%s\n", rows.dump(2).c_str());
     } else {
       std::printf("%s", format_table(board).c_str());
+      if (payoff) std::printf("\n%s", format_payoff(*t, board).c_str());
     }
     if (!svg.empty()) std::ofstream(svg) << ratings_svg(*t, board);
     return 0;

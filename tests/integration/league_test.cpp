@@ -81,6 +81,19 @@ TEST(League, RoundRobinOfFourBotsOnTwoServersMatchesTheServersRecords) {
   // The printed table is the table of the servers' records.
   auto expected = selfplay::standings(4, from_servers);
   auto board = selfplay::compute_leaderboard(*spec, games);
+  for (const auto& g : games) {  // each pair met once: the payoff is that game's result
+    EXPECT_EQ(board.payoff.win_rate(g.home, g.away), g.home_score);
+    EXPECT_EQ(board.payoff.win_rate(g.away, g.home), 1.0 - g.home_score);
+  }
+  Process table({program("olympics-league"), "table", "--db", db, "--name", "cup", "--payoff",
+                 "--svg", dir + "/cup.svg"},
+                dir + "/table.log");
+  EXPECT_EQ(table.wait(20), 0) << table.output();
+  EXPECT_NE(table.output().find("payoff: row's decayed win rate"), std::string::npos)
+      << table.output();
+  std::ifstream svg(dir + "/cup.svg");
+  std::string svg_text((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
+  EXPECT_NE(svg_text.find("<polyline"), std::string::npos);
   for (size_t i = 0; i < expected.size(); ++i) {
     EXPECT_EQ(board.rows[i].standing.entrant, expected[i].entrant);
     EXPECT_EQ(board.rows[i].standing.points, expected[i].points);

@@ -48,6 +48,24 @@ class SnapshotRoundTrip(unittest.TestCase):
         self.assertIn("MLP 366 -> 64 -> 32 -> 69, silu", inspected)
         self.assertIn("policy_version: 3", inspected)
 
+    def test_a_pytorch_mlp_exports_and_runs_the_same_in_cpp(self):
+        try:
+            import torch
+        except ImportError:
+            self.skipTest("python3-torch is not installed (deploy/test.sh installs it)")
+        torch.manual_seed(0)
+        net = torch.nn.Sequential(torch.nn.Linear(366, 48), torch.nn.SiLU(), torch.nn.Linear(48, 48),
+                                  torch.nn.SiLU(), torch.nn.Linear(48, 69))
+        path = export_mlp(net, os.path.join(self.dir, "torch.safetensors"), policy_id="torch")
+        obs = torch.randn(2, 366)
+        with torch.no_grad():
+            want = net(obs).numpy()
+        text = "\n".join(" ".join(f"{v:.9g}" for v in row) for row in obs.numpy()) + "\n"
+        out = subprocess.run([f"{BIN}/olympics-snapshot", "eval", path], input=text, capture_output=True,
+                             text=True, check=True).stdout
+        got = np.array([[float(v) for v in line.split()] for line in out.strip().splitlines()])
+        np.testing.assert_allclose(got, want, rtol=1e-4, atol=1e-5)
+
     def test_bad_snapshots_say_what_is_wrong(self):
         bad = os.path.join(self.dir, "bad.safetensors")
         with open(bad, "wb") as f:
