@@ -13,7 +13,7 @@
 #include "match_client.h"
 #include "match_host.h"
 #include "registry.h"
-#include "sqlite_results_store.h"
+#include "results_store.h"
 
 namespace olympics::bench {
 namespace {
@@ -68,7 +68,7 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
   char db[] = "/tmp/olympics-bench-XXXXXX";
   int fd = mkstemp(db);
   close(fd);
-  server::SqliteResultsStore store(db);
+  server::ResultsStore store(db);
   // With --pin, the server's workers get cores 0..workers-1 to themselves and everything else
   // (clients, LCM threads, the server's receive loop) shares the rest, so "per worker" means
   // per core, as for the bare figure.

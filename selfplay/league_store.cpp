@@ -29,15 +29,11 @@ std::string entrants_json(const TournamentSpec& t) {
   return entrants.dump();
 }
 
-std::string text(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
 }  // namespace
 
-LeagueStore::LeagueStore(const std::string& location) : db_(open_sql_database(location)) {
+// Every step is committed before it is taken, and must survive even a power loss.
+LeagueStore::LeagueStore(const std::string& location)
+    : db_(sql::open_sql_database(location, sql::Durability::PowerLoss)) {
   db_->script(kSchema);
 }
 
@@ -69,9 +65,10 @@ std::vector<std::string> LeagueStore::tournament_names() {
 }
 
 void LeagueStore::create_tournament(const TournamentSpec& t) {
-  db_->query("INSERT INTO tournaments VALUES ($1,$2,$3,$4,$5,$6,$7,$8)",
-             {t.name, t.format, t.sport, t.mode, std::to_string(t.seed), text(t.time_limit_s),
-              entrants_json(t), t.options.empty() ? "{}" : t.options});
+  db_->query(
+      "INSERT INTO tournaments VALUES ($1,$2,$3,$4,$5,$6,$7,$8)",
+      {t.name, t.format, t.sport, t.mode, std::to_string(t.seed), sql::exact_text(t.time_limit_s),
+       entrants_json(t), t.options.empty() ? "{}" : t.options});
 }
 
 void LeagueStore::update_entrants(const TournamentSpec& t) {
@@ -105,8 +102,8 @@ void LeagueStore::add_games(const std::string& tournament, const std::vector<Gam
           "INSERT INTO games VALUES ($1,$2,$3,$4,$5,$6,$7,$8,$9,$10,$11,$12,$13)",
           {tournament, std::to_string(g.index), std::to_string(g.round), std::to_string(g.home),
            std::to_string(g.away), std::to_string(static_cast<int>(g.status)),
-           std::to_string(g.attempt), g.request_id, g.server_id, g.match_id, text(g.home_score),
-           g.reason, std::to_string(g.ticks)});
+           std::to_string(g.attempt), g.request_id, g.server_id, g.match_id,
+           sql::exact_text(g.home_score), g.reason, std::to_string(g.ticks)});
     db_->script("COMMIT");
   } catch (...) {
     db_->script("ROLLBACK");
@@ -119,8 +116,8 @@ void LeagueStore::update_game(const std::string& tournament, const Game& g) {
       "UPDATE games SET status = $3, attempt = $4, request_id = $5, server_id = $6, match_id = $7, "
       "home_score = $8, reason = $9, ticks = $10 WHERE tournament = $1 AND idx = $2",
       {tournament, std::to_string(g.index), std::to_string(static_cast<int>(g.status)),
-       std::to_string(g.attempt), g.request_id, g.server_id, g.match_id, text(g.home_score),
-       g.reason, std::to_string(g.ticks)});
+       std::to_string(g.attempt), g.request_id, g.server_id, g.match_id,
+       sql::exact_text(g.home_score), g.reason, std::to_string(g.ticks)});
 }
 
 }  // namespace olympics::selfplay

@@ -9,9 +9,11 @@
 #include <string>
 #include <vector>
 
-namespace olympics::selfplay {
-
+namespace olympics::sql {
 class SqlDatabase;
+}
+
+namespace olympics::selfplay {
 
 struct Entrant {
   std::string name;    // unique in the tournament
@@ -60,7 +62,7 @@ class LeagueStore {
   void update_game(const std::string& tournament, const Game& game);
 
  private:
-  std::unique_ptr<SqlDatabase> db_;
+  std::unique_ptr<sql::SqlDatabase> db_;
 };
 
 }  // namespace olympics::selfplay

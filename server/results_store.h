@@ -4,9 +4,14 @@
 
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
+
+namespace olympics::sql {
+class SqlDatabase;
+}
 
 namespace olympics::server {
 
@@ -38,19 +43,24 @@ struct StoredMatch {
 
 class ResultsStore {
  public:
-  virtual ~ResultsStore() = default;
+  explicit ResultsStore(const std::string& location);  // see open_results_store
+  ~ResultsStore();
+  ResultsStore(const ResultsStore&) = delete;
+  ResultsStore& operator=(const ResultsStore&) = delete;
+
   // Writes one match and its participants atomically; a match id already stored is an error.
-  virtual void record(const StoredMatch& match) = 0;
+  void record(const StoredMatch& match);
   // Most recent first; `sport` empty = all sports.
   std::vector<StoredMatch> recent(int limit, const std::string& sport = "");
   std::optional<StoredMatch> find(const std::string& match_id);
-  virtual std::string describe() const = 0;  // "sqlite:/path" or the URL without password
+  std::string describe() const;  // "sqlite:/path" or the URL without password
 
- protected:
+ private:
   // Matches (with participants), newest first, where `column` equals `value` (no filter when
   // column is empty). Column names come from this class only, never from users.
-  virtual std::vector<StoredMatch> select(const std::string& column, const std::string& value,
-                                          int limit) = 0;
+  std::vector<StoredMatch> select(const std::string& column, const std::string& value, int limit);
+  std::unique_ptr<olympics::sql::SqlDatabase> db_;
+  std::mutex mutex_;  // one connection, shared by the worker threads
 };
 
 // "postgresql://..." or "postgres://..." -> PostgreSQL; anything else is a SQLite file path.

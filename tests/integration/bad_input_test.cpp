@@ -159,7 +159,7 @@ TEST(BadInput, EveryBadMessageGetsAClearErrorAndTheMatchPlaysOn) {
   }
   const auto& result = a.wait_result();
   EXPECT_GT(result.ticks, 3);
-  EXPECT_TRUE(server.store().find(created.match_id).has_value());
+  EXPECT_TRUE(server.store()->find(created.match_id).has_value());
 }
 
 TEST(BadInput, UnknownSportListsTheKnownOnes) {

@@ -66,7 +66,7 @@ TEST(League, RoundRobinOfFourBotsOnTwoServersMatchesTheServersRecords) {
   std::vector<selfplay::GameResult> from_servers;
   for (const auto& g : games) {
     EXPECT_EQ(g.status, GameStatus::Done);
-    auto record = g.server_id == "alpha" ? alpha.find(g.match_id) : beta.find(g.match_id);
+    auto record = g.server_id == "alpha" ? alpha->find(g.match_id) : beta->find(g.match_id);
     ASSERT_TRUE(record) << "game " << g.index << ": match " << g.match_id << " not stored on "
                         << g.server_id;
     used.insert(g.server_id);
@@ -215,7 +215,7 @@ TEST(League, TwoVersusTwoEachEntrantPlaysItsWholeTeam) {
   auto spec = *store.find_tournament("doubles");
   auto alpha = servers.a.store(), beta = servers.b.store();
   for (const auto& g : store.games("doubles")) {
-    auto record = g.server_id == "alpha" ? alpha.find(g.match_id) : beta.find(g.match_id);
+    auto record = g.server_id == "alpha" ? alpha->find(g.match_id) : beta->find(g.match_id);
     ASSERT_TRUE(record);
     ASSERT_EQ(record->participants.size(), 4u);
     for (int slot = 0; slot < 4; ++slot)
@@ -249,7 +249,7 @@ TEST(League, ALiveLearnerPlaysTheMatchesTheLeagueAssignsIt) {
   int alice_games = 0;
   auto a = servers.a.store(), b = servers.b.store();
   for (const auto& g : store.games("live")) {
-    auto record = g.server_id == "alpha" ? a.find(g.match_id) : b.find(g.match_id);
+    auto record = g.server_id == "alpha" ? a->find(g.match_id) : b->find(g.match_id);
     ASSERT_TRUE(record);
     for (int team = 0; team < 2; ++team)
       if (spec.entrants[team == 0 ? g.home : g.away].name == "alice") {

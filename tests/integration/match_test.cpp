@@ -11,7 +11,7 @@ namespace {
 void expect_stored_like_printed(ServerFixture& server, const nlohmann::json& printed,
                                 const std::vector<std::string>& agents) {
   auto store = server.store();
-  auto stored = store.find(printed.at("match_id"));
+  auto stored = store->find(printed.at("match_id"));
   ASSERT_TRUE(stored.has_value()) << "match not in " << server.results_path();
   EXPECT_EQ(stored->ticks, printed.at("ticks").get<int>());
   EXPECT_EQ(stored->reason, printed.at("reason").get<std::string>());
@@ -94,7 +94,7 @@ TEST(Match, KilledClientForfeitsAndTheServerKeepsServing) {
   EXPECT_NE(r.at("reason").get<std::string>().find("forfeit: agent \"dies\""), std::string::npos)
       << r;
   EXPECT_EQ(r.at("winner_team"), 0);
-  auto stored = server.store().find(r.at("match_id"));
+  auto stored = server.store()->find(r.at("match_id"));
   ASSERT_TRUE(stored);
   EXPECT_EQ(stored->reason, r.at("reason").get<std::string>());
   // The server is still up and plays the next match to its end.
@@ -102,7 +102,7 @@ TEST(Match, KilledClientForfeitsAndTheServerKeepsServing) {
   auto q = server.agent("next1", {"--request-id", "k2", "--slots", "1"});
   EXPECT_EQ(p->wait(60), 0) << p->output();
   EXPECT_EQ(q->wait(60), 0) << q->output();
-  EXPECT_EQ(server.store().recent(10, "").size(), 2u);
+  EXPECT_EQ(server.store()->recent(10, "").size(), 2u);
 }
 
 // One client per match, owning both slots (a training client's usual shape): 50 clients, each
@@ -143,7 +143,7 @@ TEST(Match, FiftyConcurrentMatchesOnOneServerComplete) {
   for (auto& t : players) t.join();
   for (const auto& f : failures) EXPECT_EQ(f, "");
   EXPECT_EQ(completed, kMatches);
-  auto stored = server.store().recent(100, "");
+  auto stored = server.store()->recent(100, "");
   EXPECT_EQ(stored.size(), static_cast<size_t>(kMatches));
   for (const auto& m : stored) EXPECT_EQ(m.reason, "time_limit");  // played to the end
 }

@@ -78,7 +78,7 @@ TEST(Replay, RealtimeMatchKeepsTheThirtyHertzClock) {
   ServerFixture server;
   auto r = play_1v1(server, "rt", {"--realtime", "--time-limit", "1"});
   const int ticks = r.at("ticks");
-  auto stored = server.store().find(r.at("match_id"));
+  auto stored = server.store()->find(r.at("match_id"));
   ASSERT_TRUE(stored);
   EXPECT_TRUE(stored->realtime);
   // Wall time follows the clock: ticks / 30 s (a little more for start and finish).

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "replay.h"
-#include "sqlite_results_store.h"
+#include "results_store.h"
 #include "test_programs.h"
 
 namespace olympics::testing {
@@ -54,7 +54,9 @@ class ServerFixture {
     return nlohmann::json::parse(out.substr(at, out.find('\n', at) - at));
   }
 
-  server::SqliteResultsStore store() { return server::SqliteResultsStore(results_path()); }
+  std::unique_ptr<server::ResultsStore> store() {
+    return server::open_results_store(results_path());
+  }
   server::Replay replay(const std::string& match_id) {
     return server::read_replay(dir_ + "/replays/" + match_id + ".replay");
   }

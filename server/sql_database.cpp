@@ -7,12 +7,12 @@
 #include <regex>
 #include <stdexcept>
 
-namespace olympics::selfplay {
+namespace olympics::sql {
 namespace {
 
 class SqliteDatabase : public SqlDatabase {
  public:
-  explicit SqliteDatabase(const std::string& path) : path_(path) {
+  SqliteDatabase(const std::string& path, Durability durability) : path_(path) {
     if (sqlite3_open(path.c_str(), &db_) != SQLITE_OK) {
       std::string why = sqlite3_errmsg(db_);
       sqlite3_close(db_);
@@ -20,7 +20,9 @@ class SqliteDatabase : public SqlDatabase {
                                " (check that the folder exists and is writable)");
     }
     sqlite3_busy_timeout(db_, 5000);
-    script("PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL;");  // each commit survives kill -9
+    script(durability == Durability::PowerLoss
+               ? "PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL;"
+               : "PRAGMA journal_mode=WAL; PRAGMA synchronous=NORMAL;");
   }
   ~SqliteDatabase() override { sqlite3_close(db_); }
 
@@ -115,10 +117,16 @@ class PostgresDatabase : public SqlDatabase {
 
 }  // namespace
 
-std::unique_ptr<SqlDatabase> open_sql_database(const std::string& location) {
-  if (location.rfind("postgresql://", 0) == 0 || location.rfind("postgres://", 0) == 0)
-    return std::make_unique<PostgresDatabase>(location);
-  return std::make_unique<SqliteDatabase>(location);
+std::string exact_text(double value) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", value);
+  return buf;
 }
 
-}  // namespace olympics::selfplay
+std::unique_ptr<SqlDatabase> open_sql_database(const std::string& location, Durability durability) {
+  if (location.rfind("postgresql://", 0) == 0 || location.rfind("postgres://", 0) == 0)
+    return std::make_unique<PostgresDatabase>(location);
+  return std::make_unique<SqliteDatabase>(location, durability);
+}
+
+}  // namespace olympics::sql
