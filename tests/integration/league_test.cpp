@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <set>
 #include <thread>
 
@@ -23,6 +24,28 @@ struct TwoServers {
   ServerFixture a{std::vector<std::string>{}, url, "", "alpha"};
   ServerFixture b{std::vector<std::string>{}, url, "", "beta"};
 };
+
+// Polls the league's database until `ready` holds for its games (then returns true) or the time is
+// up.
+bool wait_for_games(const std::string& db, const std::string& name,
+                    const std::function<bool(const std::vector<selfplay::Game>&)>& ready,
+                    double timeout_s = 20) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (std::chrono::steady_clock::now() < deadline) {
+    try {
+      if (ready(selfplay::LeagueStore(db).games(name))) return true;
+    } catch (const std::exception&) {  // the league has not created its tables yet
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  return false;
+}
+
+int done_games(const std::vector<selfplay::Game>& games) {
+  int done = 0;
+  for (const auto& g : games) done += g.status == GameStatus::Done;
+  return done;
+}
 
 std::unique_ptr<Process> league(const TwoServers& servers, const std::string& db,
                                 const std::string& name, const std::string& log) {
@@ -118,28 +141,13 @@ TEST_P(LeagueState, KilledWithSigkillResumesToTheSameFinalTable) {
       "interrupted-" + std::to_string(std::chrono::system_clock::now().time_since_epoch().count());
   auto first = league(servers, db, name, dir + "/b1.log");
   // Kill it once some, but not all, games are done.
-  bool killed = false;
-  for (int i = 0; i < 2000 && !killed; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    try {
-      selfplay::LeagueStore peek(db);
-      int done = 0;
-      for (const auto& g : peek.games(name)) done += g.status == GameStatus::Done;
-      if (done >= 2) {
-        first->signal(SIGKILL);
-        killed = true;
-      }
-    } catch (const std::exception&) {
-    }
-  }
+  const bool killed =
+      wait_for_games(db, name, [](const auto& games) { return done_games(games) >= 2; });
+  first->signal(SIGKILL);
   ASSERT_TRUE(killed) << first->output();
   first->wait(10);
-  {
-    selfplay::LeagueStore peek(db);
-    int done = 0;
-    for (const auto& g : peek.games(name)) done += g.status == GameStatus::Done;
-    EXPECT_LT(done, 6) << "the league finished before it could be killed";
-  }
+  EXPECT_LT(done_games(selfplay::LeagueStore(db).games(name)), 6)
+      << "the league finished before it was killed";
   auto second = league(servers, db, name, dir + "/b2.log");
   ASSERT_EQ(second->wait(120), 0) << second->output();
   EXPECT_NE(second->output().find("resuming " + name), std::string::npos);
@@ -173,20 +181,13 @@ TEST(League, AGameOnAServerThatDiesIsPlayedAgainElsewhere) {
                                "--log-dir", temp_dir(), "--quiet"},
       dir + "/league.log");
   // Wait until a game is under way on beta, then kill beta.
-  bool killed = false;
-  for (int i = 0; i < 4000 && !killed; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    try {
-      selfplay::LeagueStore peek(db);
-      for (const auto& g : peek.games("outage"))
-        if (g.status == GameStatus::Dispatched && g.server_id == "beta" && !g.match_id.empty()) {
-          servers.b.server().signal(SIGKILL);
-          killed = true;
-          break;
-        }
-    } catch (const std::exception&) {
-    }
-  }
+  const bool killed = wait_for_games(db, "outage", [](const auto& games) {
+    for (const auto& g : games)
+      if (g.status == GameStatus::Dispatched && g.server_id == "beta" && !g.match_id.empty())
+        return true;
+    return false;
+  });
+  servers.b.server().signal(SIGKILL);
   ASSERT_TRUE(killed) << "no game reached beta";
   ASSERT_EQ(run->wait(120), 0) << run->output();
   EXPECT_NE(run->output().find("server beta stopped announcing; trying again"), std::string::npos)
@@ -335,17 +336,9 @@ TEST(League, SelfplayKilledAndResumedDecidesExactlyAsAnUninterruptedRun) {
 
   const std::string db = dir + "/b.db";
   auto first = selfplay_league(servers, db, "cut", snapshots, dir + "/b1.log");
-  bool killed = false;
-  for (int i = 0; i < 4000 && !killed; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(3));
-    try {
-      selfplay::LeagueStore peek(db);
-      int done = 0;
-      for (const auto& g : peek.games("cut")) done += g.status == GameStatus::Done;
-      if (done >= 4) first->signal(SIGKILL), killed = true;
-    } catch (const std::exception&) {
-    }
-  }
+  const bool killed =
+      wait_for_games(db, "cut", [](const auto& games) { return done_games(games) >= 4; });
+  first->signal(SIGKILL);
   ASSERT_TRUE(killed) << first->output();
   first->wait(10);
   auto second = selfplay_league(servers, db, "cut", snapshots, dir + "/b2.log");
