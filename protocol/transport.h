@@ -35,11 +35,7 @@ class Transport {
   void unsubscribe(int handle);
 
   template <typename Msg>
-  void publish(const std::string& channel, const Msg& msg) {
-    std::vector<std::uint8_t> buf(msg.getEncodedSize());
-    msg.encode(buf.data(), 0, static_cast<int>(buf.size()));
-    publish_raw(channel, buf.data(), static_cast<int>(buf.size()));
-  }
+  void publish(const std::string& channel, const Msg& msg);
   void publish_raw(const std::string& channel, const std::uint8_t* data, int size);
 
   // Handles at most one message, waiting up to timeout_ms; returns true if one was handled.
@@ -58,6 +54,20 @@ class Transport {
   std::atomic<long> published_{0}, dropped_{0};
   std::vector<std::unique_ptr<Subscription>> subscriptions_;
 };
+
+// The bytes of an LCM message.
+template <typename Msg>
+std::vector<std::uint8_t> encode(const Msg& msg) {
+  std::vector<std::uint8_t> buf(msg.getEncodedSize());
+  msg.encode(buf.data(), 0, static_cast<int>(buf.size()));
+  return buf;
+}
+
+template <typename Msg>
+void Transport::publish(const std::string& channel, const Msg& msg) {
+  const auto buf = encode(msg);
+  publish_raw(channel, buf.data(), static_cast<int>(buf.size()));
+}
 
 // Decodes an LCM message; nullopt when the bytes are truncated, corrupt or of another type.
 template <typename Msg>

@@ -95,8 +95,7 @@ std::vector<Game> LeagueStore::games(const std::string& tournament) {
 }
 
 void LeagueStore::add_games(const std::string& tournament, const std::vector<Game>& games) {
-  db_->script("BEGIN");
-  try {
+  db_->transaction([&] {
     for (const auto& g : games)
       db_->query(
           "INSERT INTO games VALUES ($1,$2,$3,$4,$5,$6,$7,$8,$9,$10,$11,$12,$13)",
@@ -104,11 +103,7 @@ void LeagueStore::add_games(const std::string& tournament, const std::vector<Gam
            std::to_string(g.away), std::to_string(static_cast<int>(g.status)),
            std::to_string(g.attempt), g.request_id, g.server_id, g.match_id,
            sql::exact_text(g.home_score), g.reason, std::to_string(g.ticks)});
-    db_->script("COMMIT");
-  } catch (...) {
-    db_->script("ROLLBACK");
-    throw;
-  }
+  });
 }
 
 void LeagueStore::update_game(const std::string& tournament, const Game& g) {

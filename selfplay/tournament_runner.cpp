@@ -18,19 +18,28 @@ constexpr auto kRequestResend = std::chrono::milliseconds(250);
 constexpr auto kProbeInterval = std::chrono::seconds(1);
 }  // namespace
 
-std::string team_slots(const std::string& mode, int team) {
+std::vector<int> team_slots(const std::string& mode, int team) {
   const auto v = mode.find('v');
   const int size = v == std::string::npos ? 0 : std::atoi(mode.substr(0, v).c_str());
   if (size < 1 || mode != std::to_string(size) + "v" + std::to_string(size))
     throw std::invalid_argument("the league plays two-team modes (1v1, 2v2, ...), not \"" + mode +
                                 "\"");
-  std::string slots;
-  for (int k = 0; k < size; ++k) {
-    if (k) slots += ',';
-    slots += std::to_string(team * size + k);
-  }
+  std::vector<int> slots;
+  for (int k = 0; k < size; ++k) slots.push_back(team * size + k);
   return slots;
 }
+
+namespace {
+// {2, 3} -> "2,3", as olympics-agent --slots takes them.
+std::string slots_argument(const std::vector<int>& slots) {
+  std::string text;
+  for (int s : slots) {
+    if (!text.empty()) text += ',';
+    text += std::to_string(s);
+  }
+  return text;
+}
+}  // namespace
 
 TournamentRunner::TournamentRunner(LeagueStore& store, TournamentSpec spec, RunnerSettings settings,
                                    std::unique_ptr<Scheduler> scheduler)
@@ -189,7 +198,7 @@ void TournamentRunner::start_workers(Game& g) {
                                      "--match",
                                      g.match_id,
                                      "--slots",
-                                     team_slots(spec_.mode, team),
+                                     slots_argument(team_slots(spec_.mode, team)),
                                      "--policy",
                                      e.policy,
                                      "--policy-seed",
@@ -217,12 +226,7 @@ void TournamentRunner::assign_live(const Game& g) {
     a.learner = e.policy.substr(5);
     a.game = g.index;
     a.match_id = g.match_id;
-    const std::string slots = team_slots(spec_.mode, team);
-    for (size_t at = 0; at < slots.size();) {
-      size_t comma = slots.find(',', at);
-      a.slots.push_back(std::stoi(slots.substr(at, comma - at)));
-      at = comma == std::string::npos ? slots.size() : comma + 1;
-    }
+    a.slots = team_slots(spec_.mode, team);
     a.num_slots = static_cast<int>(a.slots.size());
     a.opponent = spec_.entrants[team == 0 ? g.away : g.home].name;
     transport_.publish(protocol::kLeague, a);

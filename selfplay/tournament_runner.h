@@ -28,9 +28,9 @@ struct RunnerSettings {
   bool progress = true;              // a progress bar on stderr
 };
 
-// The slots one team plays in a two-team mode: "2v2", team 1 -> "2,3". Each entrant plays all the
+// The slots one team plays in a two-team mode: "2v2", team 1 -> {2, 3}. Each entrant plays all the
 // slots of its team. Throws for other modes.
-std::string team_slots(const std::string& mode, int team);
+std::vector<int> team_slots(const std::string& mode, int team);
 
 class TournamentRunner {
  public:

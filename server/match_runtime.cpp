@@ -57,8 +57,7 @@ MatchRuntime::MatchRuntime(MatchIdentity identity, RuntimeSettings settings,
 
 template <typename Msg>
 void MatchRuntime::send(const std::string& channel, const Msg& msg) {
-  std::vector<std::uint8_t> buf(msg.getEncodedSize());
-  msg.encode(buf.data(), 0, static_cast<int>(buf.size()));
+  const auto buf = protocol::encode(msg);
   if (log_) log_->write(channel, buf.data(), static_cast<int>(buf.size()));
   transport_.publish_raw(channel, buf.data(), static_cast<int>(buf.size()));
 }
@@ -396,7 +395,8 @@ void MatchRuntime::finish(Clock::time_point now) {
   r.mode = identity_.settings.mode;
   r.seed = static_cast<std::int64_t>(identity_.settings.seed);
   r.ticks = game_->tick();
-  r.duration_s = phase_ == Phase::Finished && started_at_ != Clock::time_point{}
+  // A match cancelled before it started has no duration.
+  r.duration_s = started_at_ != Clock::time_point{}
                      ? static_cast<float>(Seconds(now - started_at_).count())
                      : 0.0f;
   r.reason = out.reason;

@@ -36,8 +36,7 @@ std::string ResultsStore::describe() const { return db_->describe(); }
 
 void ResultsStore::record(const StoredMatch& m) {
   std::lock_guard lock(mutex_);
-  db_->script("BEGIN");
-  try {
+  db_->transaction([&] {
     db_->query("INSERT INTO matches VALUES ($1,$2,$3,$4,$5,$6,$7,$8,$9,$10,$11,$12,$13,$14)",
                {m.match_id, m.server_id, m.server_version, m.sport, m.mode, std::to_string(m.seed),
                 m.realtime ? "1" : "0", std::to_string(m.ticks), sql::exact_text(m.wall_time_s),
@@ -47,11 +46,7 @@ void ResultsStore::record(const StoredMatch& m) {
       db_->query("INSERT INTO participants VALUES ($1,$2,$3,$4,$5,$6)",
                  {m.match_id, std::to_string(p.slot), std::to_string(p.team), p.agent, p.policy,
                   p.policy_version});
-    db_->script("COMMIT");
-  } catch (...) {
-    db_->script("ROLLBACK");
-    throw;
-  }
+  });
 }
 
 std::vector<StoredMatch> ResultsStore::select(const std::string& column, const std::string& value,

@@ -117,6 +117,17 @@ class PostgresDatabase : public SqlDatabase {
 
 }  // namespace
 
+void SqlDatabase::transaction(const std::function<void()>& work) {
+  script("BEGIN");
+  try {
+    work();
+    script("COMMIT");
+  } catch (...) {
+    script("ROLLBACK");
+    throw;
+  }
+}
+
 std::string exact_text(double value) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.17g", value);

@@ -3,6 +3,7 @@
 // $1..$n, types both accept), values passed and returned as text.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -18,6 +19,9 @@ class SqlDatabase {
                                  const std::vector<std::string>& params = {}) = 0;
   // Several statements without parameters (a schema).
   virtual void script(const std::string& sql) = 0;
+  // Runs `work` in one transaction: committed if it returns, rolled back (and rethrown) if it
+  // throws.
+  void transaction(const std::function<void()>& work);
   virtual std::string describe() const = 0;  // the location, without a password
 };
 

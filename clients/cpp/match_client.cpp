@@ -259,8 +259,7 @@ void MatchClient::act(int tick, const std::vector<std::vector<float>>& actions) 
   b.slots = slots_;
   b.action_size = actions.empty() ? 0 : static_cast<int>(actions[0].size());
   b.actions = actions;
-  last_action_bytes_.resize(b.getEncodedSize());
-  b.encode(last_action_bytes_.data(), 0, static_cast<int>(last_action_bytes_.size()));
+  last_action_bytes_ = protocol::encode(b);
   last_action_tick_ = tick;
   resend_gap_s_ = options_.resend_interval_s;
   transport_.publish_raw(match_.action_channel, last_action_bytes_.data(),
