@@ -46,6 +46,13 @@ int describe(const std::string& sport_name, const std::string& mode_arg) {
   std::printf("%s: %s\nmodes:", sport.name().c_str(), sport.summary().c_str());
   for (const auto& m : sport.modes()) std::printf(" %s", m.c_str());
   std::printf("\ndefault time limit: %g s; control at 30 Hz\n", sport.default_time_limit_s());
+  const auto settings = sport.settings();
+  if (!settings.empty()) {
+    std::printf("settings (a match request's options, JSON):\n");
+    for (const auto& s : settings)
+      std::printf("  %-18s = %-10s %s\n", s.key.c_str(), s.default_value.dump().c_str(),
+                  s.meaning.c_str());
+  }
   std::vector<std::string> modes =
       mode_arg.empty() ? sport.modes() : std::vector<std::string>{mode_arg};
   for (const auto& mode : modes) {

@@ -175,11 +175,23 @@ void MatchHost::on_request(const std::uint8_t* data, int size) {
                  "request " + req->request_id + ": server " + settings_.server_id + " hosts " +
                      std::to_string(settings_.capacity) + " matches already; try another server");
 
+  nlohmann::json options = nlohmann::json::object();
+  if (!req->options.empty()) {
+    options = nlohmann::json::parse(req->options, nullptr, /*allow_exceptions=*/false);
+    if (!options.is_object())
+      return error("", "", "BAD_REQUEST",
+                   "request " + req->request_id +
+                       ": options must be a JSON object such as {\"format\": \"tiebreak\"}, "
+                       "got: " +
+                       req->options.substr(0, 200));
+  }
+
   MatchIdentity id;
   id.server_id = settings_.server_id;
   id.sport = req->sport;
   id.settings = {req->mode, static_cast<std::uint64_t>(req->seed),
-                 req->time_limit_s > 0 ? req->time_limit_s : sport->default_time_limit_s()};
+                 req->time_limit_s > 0 ? req->time_limit_s : sport->default_time_limit_s(),
+                 options};
   id.realtime = req->realtime;
   std::unique_ptr<sports::SportMatch> game;
   try {

@@ -449,6 +449,7 @@ Replay MatchRuntime::replay() const {
                {"mode", identity_.settings.mode},
                {"seed", identity_.settings.seed},
                {"time_limit_s", identity_.settings.time_limit_s},
+               {"options", identity_.settings.options},
                {"realtime", identity_.realtime},
                {"agents", r.agent_names},
                {"result",

@@ -60,7 +60,8 @@ ReplayCheck verify_replay(const Replay& r) {
   const auto& h = r.header;
   const sports::Sport& sport = sports::sport_or_throw(h.at("sport"));
   sports::MatchSettings settings{h.at("mode"), h.at("seed").get<std::uint64_t>(),
-                                 h.at("time_limit_s")};
+                                 h.at("time_limit_s"),
+                                 h.value("options", nlohmann::json::object())};
   auto match = sport.create(settings);
   if (match->slot_count() != r.slot_count || match->action_size() != r.action_size)
     return {false, "the replay's slots or action size do not match the sport's"};

@@ -17,6 +17,9 @@ struct MatchSettings {
   std::string mode;
   std::uint64_t seed = 0;
   double time_limit_s = 0;  // 0: the sport's default
+  // The sport's own settings (net height, match format, ...); a sport refuses keys it does not
+  // know with std::invalid_argument naming the ones it does.
+  nlohmann::json options = nlohmann::json::object();
 };
 
 // What one tick produced.
@@ -47,6 +50,19 @@ struct Layout {
   int observation_size() const;
   int action_size() const;
 };
+
+// A sport's settings: each key with its default and what it means, for `describe` and for
+// refusing unknown keys.
+struct SettingSpec {
+  std::string key;
+  nlohmann::json default_value;
+  std::string meaning;
+};
+
+// Returns `options` over the defaults; throws std::invalid_argument naming the sport's settings
+// when a key is unknown or a value has another JSON type than its default.
+nlohmann::json merge_settings(const std::string& sport, const std::vector<SettingSpec>& specs,
+                              const nlohmann::json& options);
 
 class SportMatch {
  public:
@@ -83,6 +99,7 @@ class Sport {
   // Throws std::invalid_argument naming the known modes when the mode is unknown.
   virtual std::unique_ptr<SportMatch> create(const MatchSettings& settings) const = 0;
   virtual Layout layout(const std::string& mode) const = 0;
+  virtual std::vector<SettingSpec> settings() const { return {}; }
 };
 
 }  // namespace olympics::sports

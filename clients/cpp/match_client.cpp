@@ -101,6 +101,7 @@ olympics::match_created_t MatchClient::request_match(const MatchRequest& r, doub
   req.seed = r.seed;
   req.time_limit_s = static_cast<float>(r.time_limit_s);
   req.realtime = r.realtime;
+  req.options = r.options;
   pending_request_id_ = req.request_id;
   created_.reset();
   errors_.clear();

@@ -54,6 +54,7 @@ struct MatchRequest {
   bool realtime = false;
   std::string request_id;  // clients sending the same id get the same match
   std::string server_id;   // "" = any server
+  std::string options;     // the sport's settings, a JSON object ("" = defaults)
 };
 
 // One tick's observations for the slots this client owns, in slot order.

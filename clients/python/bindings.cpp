@@ -89,8 +89,9 @@ PYBIND11_MODULE(_client, m) {
           "request_match",
           [](MatchClient& c, const std::string& sport, const std::string& mode, std::int64_t seed,
              double time_limit_s, bool realtime, const std::string& request_id,
-             const std::string& server_id, double timeout_s) {
-            MatchRequest r{sport, mode, seed, time_limit_s, realtime, request_id, server_id};
+             const std::string& server_id, double timeout_s, const std::string& options) {
+            MatchRequest r{sport,    mode,       seed,      time_limit_s,
+                           realtime, request_id, server_id, options};
             olympics::match_created_t created;
             {
               py::gil_scoped_release release;
@@ -100,7 +101,7 @@ PYBIND11_MODULE(_client, m) {
           },
           py::arg("sport") = "sandbox", py::arg("mode") = "1v1", py::arg("seed") = 0,
           py::arg("time_limit_s") = 0.0, py::arg("realtime") = false, py::arg("request_id") = "",
-          py::arg("server_id") = "", py::arg("timeout_s") = 10.0)
+          py::arg("server_id") = "", py::arg("timeout_s") = 10.0, py::arg("options") = "")
       .def(
           "wait_assignment",
           [](MatchClient& c, const std::string& learner, double timeout_s) {

@@ -47,6 +47,7 @@ std::vector<std::string> SandboxSport::modes() const {
 std::unique_ptr<SportMatch> SandboxSport::create(const MatchSettings& settings) const {
   MatchSettings s = settings;
   if (s.time_limit_s <= 0) s.time_limit_s = default_time_limit_s();
+  merge_settings(name(), {}, s.options);  // the sandbox has no settings: refuses any
   return std::make_unique<SandboxMatch>(teams_or_throw(s.mode), s);
 }
 

@@ -19,12 +19,15 @@ class OlympicsParallelEnv:
 
     def __init__(self, sport="sandbox", mode="1v1", slots=None, match_id=None, request_id=None,
                  time_limit_s=0.0, realtime=False, lcm_url="", agent_name="python",
-                 policy_id="", policy_version="", server_id="", timeout_s=60.0, learner=None):
+                 policy_id="", policy_version="", server_id="", timeout_s=60.0, learner=None,
+                 sport_options=None):
         self.sport, self.mode = sport, mode
         self.slots = None if slots is None else sorted(slots)
         self.match_id, self.request_id = match_id, request_id
         self.time_limit_s, self.realtime, self.server_id = time_limit_s, realtime, server_id
         self.timeout_s = timeout_s
+        # The sport's settings (e.g. {"format": "tiebreak"} for tennis), sent with each request.
+        self.sport_options = dict(sport_options or {})
         self.learner = learner  # a league entrant live:<learner>: reset() plays what the league assigns
         self.assignment = None
         self._client = MatchClient(lcm_url, agent_name, policy_id, policy_version)
@@ -63,7 +66,8 @@ class OlympicsParallelEnv:
             base = self.request_id if self.request_id is not None else self._client.client_id
             created = self._client.request_match(
                 self.sport, self.mode, seed or 0, self.time_limit_s, self.realtime,
-                f"{base}-{episode}", self.server_id, self.timeout_s)
+                f"{base}-{episode}", self.server_id, self.timeout_s,
+                json.dumps(self.sport_options) if self.sport_options else "")
             match_id = created["match_id"]
             if slots is None:
                 slots = list(range(created["num_slots"]))
