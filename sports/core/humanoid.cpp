@@ -140,6 +140,7 @@ Humanoid::Humanoid(PhysicsWorld& world, const ModelSpec& spec, const RootPlaceme
     com_offset_.push_back(com);
 
     for (const auto& g : b.geoms) {
+      if (!g.collides) continue;
       dGeomID geom = create_geom(world_.space(), g);
       dGeomSetBody(geom, body);
       Eigen::Vector3d offset = g.pos - com;

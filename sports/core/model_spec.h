@@ -26,6 +26,7 @@ struct GeomSpec {
   double density = 1000;
   std::optional<double> mass;  // overrides density when given
   double friction = 1.0;
+  bool collides = true;  // false: mass only, no ODE geom (e.g. a racket face, see equipment.h)
 };
 
 struct HingeSpec {

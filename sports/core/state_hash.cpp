@@ -6,7 +6,7 @@
 
 namespace olympics::core {
 
-std::uint64_t state_hash(const HumanoidScene& scene) {
+std::uint64_t state_hash(const HumanoidScene& scene, std::span<const double> extra) {
   std::vector<double> values;
   for (int i = 0; i < scene.humanoid_count(); ++i)
     for (int b = 0; b < scene.humanoid(i).body_count(); ++b) {
@@ -16,6 +16,7 @@ std::uint64_t state_hash(const HumanoidScene& scene) {
       values.insert(values.end(), dBodyGetLinearVel(body), dBodyGetLinearVel(body) + 3);
       values.insert(values.end(), dBodyGetAngularVel(body), dBodyGetAngularVel(body) + 3);
     }
+  values.insert(values.end(), extra.begin(), extra.end());
   return XXH3_64bits(values.data(), values.size() * sizeof(double));
 }
 

@@ -3,11 +3,13 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 
 #include "core/humanoid_scene.h"
 
 namespace olympics::core {
 
-std::uint64_t state_hash(const HumanoidScene& scene);
+// `extra` values (e.g. a ball flown outside ODE) are hashed after the bodies.
+std::uint64_t state_hash(const HumanoidScene& scene, std::span<const double> extra = {});
 
 }  // namespace olympics::core

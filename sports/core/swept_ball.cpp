@@ -4,11 +4,11 @@
 #include <cmath>
 
 namespace olympics::core {
-namespace {
-
 Pose interpolate(const Pose& a, const Pose& b, double t) {
   return {a.position + t * (b.position - a.position), a.orientation.slerp(t, b.orientation)};
 }
+
+namespace {
 
 // Closest point of the solid disc to q, in world coordinates.
 Eigen::Vector3d closest_point(const Eigen::Vector3d& q, const Disc& disc, const Pose& pose) {
@@ -63,14 +63,15 @@ std::optional<SweptHit> sweep_ball_disc(const Eigen::Vector3d& p0, const Eigen::
 
 Eigen::Vector3d bounce(const Eigen::Vector3d& ball_velocity,
                        const Eigen::Vector3d& surface_velocity, const Eigen::Vector3d& normal,
-                       double restitution, double friction) {
+                       double restitution, double friction, double max_tangential_loss) {
   const Eigen::Vector3d relative = ball_velocity - surface_velocity;
   const double vn = relative.dot(normal);
   if (vn >= 0) return ball_velocity;  // separating already
   const Eigen::Vector3d tangential = relative - vn * normal;
   const double normal_change = -(1 + restitution) * vn;  // > 0
   const double tangential_speed = tangential.norm();
-  const double tangential_change = std::min(friction * normal_change, tangential_speed);
+  const double tangential_change =
+      std::min(friction * normal_change, max_tangential_loss * tangential_speed);
   Eigen::Vector3d after = relative + normal_change * normal;
   if (tangential_speed > 0) after -= tangential_change * tangential / tangential_speed;
   return surface_velocity + after;

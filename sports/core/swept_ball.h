@@ -27,6 +27,9 @@ struct SweptHit {
   Eigen::Vector3d disc_point_velocity;  // the disc's velocity at the contact point
 };
 
+// The pose a fraction t of the way from a to b (position lerp, orientation slerp).
+Pose interpolate(const Pose& a, const Pose& b, double t);
+
 // Distance from a sphere centre to the solid disc at `pose`, minus the sphere radius (< 0:
 // overlap).
 double ball_disc_distance(const Eigen::Vector3d& centre, double ball_radius, const Disc& disc,
@@ -41,9 +44,10 @@ std::optional<SweptHit> sweep_ball_disc(const Eigen::Vector3d& p0, const Eigen::
 // The ball's velocity after bouncing off a much heavier surface moving with `surface_velocity` at
 // the contact: the normal part of the relative velocity is reversed and scaled by `restitution`,
 // the tangential part is reduced by Coulomb friction (at most `friction` times the normal impulse,
-// never past sticking).
+// never past sticking; never past rolling: at most `max_tangential_loss` of the tangential
+// speed, 0.4 for a hollow ball, I = 2/3 m r^2, whose spin is not tracked).
 Eigen::Vector3d bounce(const Eigen::Vector3d& ball_velocity,
                        const Eigen::Vector3d& surface_velocity, const Eigen::Vector3d& normal,
-                       double restitution, double friction);
+                       double restitution, double friction, double max_tangential_loss = 1.0);
 
 }  // namespace olympics::core
