@@ -3,6 +3,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "racket/racket_sport.h"
 #include "sandbox/sandbox.h"
 
 namespace olympics::sports {
@@ -12,6 +13,8 @@ const std::vector<std::unique_ptr<Sport>>& all_sports() {
   static const auto sports = [] {
     std::vector<std::unique_ptr<Sport>> v;
     v.push_back(std::make_unique<SandboxSport>());
+    v.push_back(std::make_unique<racket::RacketSport>(/*table_tennis=*/false));
+    v.push_back(std::make_unique<racket::RacketSport>(/*table_tennis=*/true));
     return v;
   }();
   return sports;

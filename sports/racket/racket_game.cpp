@@ -1,0 +1,86 @@
+#include "racket/racket_game.h"
+
+#include <cmath>
+
+namespace olympics::sports::racket {
+
+std::vector<core::ArenaBox> RacketGame::arena() const {
+  std::vector<core::ArenaBox> boxes;
+  // A net absorbs most of a ball's energy; it is a thin box from the surface to its top.
+  boxes.push_back({kNet,
+                   {-net_half_thickness, -net_half_span, surface_height},
+                   {net_half_thickness, net_half_span, net_height},
+                   0.1,
+                   0.6});
+  if (on_table)
+    boxes.push_back({kTable,
+                     {-half_length, -half_width_singles, surface_height - table_thickness},
+                     {half_length, half_width_singles, surface_height},
+                     ball.restitution,
+                     ball.friction});
+  return boxes;
+}
+
+bool RacketGame::in_half(int team, double x, double y, bool doubles) const {
+  const double depth = x * side_sign(team);
+  return depth >= 0 && depth <= half_length + ball.radius &&
+         std::abs(y) <= half_width(doubles) + ball.radius;  // a ball touching the line is in
+}
+
+RacketGame tennis_game(double net_height) {
+  RacketGame g;
+  g.sport = "tennis";
+  g.ball = core::tennis_ball();
+  g.equipment = core::tennis_racket();
+  g.half_length = 23.77 / 2;
+  g.half_width_singles = 8.23 / 2;
+  g.half_width_doubles = 10.97 / 2;
+  g.surface_height = 0;
+  g.net_height = net_height;
+  g.net_half_span = 10.97 / 2 + 0.914;  // posts 0.914 m outside the doubles sidelines
+  g.player_x = 23.77 / 2;
+  g.partner_y = 2.5;
+  g.launch_x = 12.5;
+  g.launch_y = 3;
+  g.launch_z = 1.2;
+  g.launch_speed_lo = 12;
+  g.launch_speed_hi = 18;
+  g.feed_z = 1.2;
+  g.feed_speed_lo = 8;
+  g.feed_speed_hi = 12;
+  g.target_x_lo = 8;
+  g.target_x_hi = 11;
+  g.target_y = 3;
+  return g;
+}
+
+RacketGame table_tennis_game() {
+  RacketGame g;
+  g.sport = "table_tennis";
+  g.on_table = true;
+  g.ball = core::table_tennis_ball();
+  g.equipment = core::table_tennis_paddle();
+  g.half_length = 2.74 / 2;
+  g.half_width_singles = g.half_width_doubles = 1.525 / 2;
+  g.surface_height = 0.76;
+  g.net_height = 0.76 + 0.1525;
+  g.net_half_span = 1.525 / 2 + 0.1525;  // the net overhangs each side by 15.25 cm
+  g.net_half_thickness = 0.005;
+  g.player_x = 2.0;
+  g.partner_y = 0.4;
+  g.launch_x = 1.6;
+  g.launch_y = 0.5;
+  g.launch_z = 1.0;
+  g.launch_speed_lo = 3;
+  g.launch_speed_hi = 5;
+  g.feed_z = 1.4;
+  g.feed_speed_lo = 2;
+  g.feed_speed_hi = 3;
+  g.target_x_lo = 0.3;
+  g.target_x_hi = 1.2;
+  g.target_y = 0.6;
+  g.reward_counts_hits = true;
+  return g;
+}
+
+}  // namespace olympics::sports::racket

@@ -1,0 +1,93 @@
+#include "racket/racket_sport.h"
+
+#include <stdexcept>
+
+namespace olympics::sports::racket {
+namespace {
+
+RacketMode mode_or_throw(const std::string& sport, const std::string& mode) {
+  if (mode == "ball_return") return RacketMode::BallReturn;
+  if (mode == "1v1") return RacketMode::Singles;
+  if (mode == "2v2") return RacketMode::Doubles;
+  throw std::invalid_argument(sport + " has no mode \"" + mode +
+                              "\"; modes: ball_return, 1v1, 2v2");
+}
+
+int positive(const nlohmann::json& s, const char* key, int most) {
+  const int v = s.at(key).get<int>();
+  if (v < 1 || v > most)
+    throw std::invalid_argument(std::string("setting \"") + key + "\" must be 1.." +
+                                std::to_string(most));
+  return v;
+}
+
+}  // namespace
+
+std::string RacketSport::summary() const {
+  return table_tennis_ ? "paddle, table, ball with drag; games to 11, win by 2"
+                       : "racket, court, ball with drag; points, games, tie-break sets";
+}
+
+std::vector<SettingSpec> RacketSport::settings() const {
+  if (table_tennis_)
+    return {{"games_to_win", 1, "games that win the match (best of 2n-1)"},
+            {"points_per_game", 11, "points that win a game, by 2"},
+            {"max_rally_s", 10.0, "no stroke for this long: the side to play loses the point"}};
+  return {{"net_height", 1.0, "m; the seed's 1.0 (a real net is 0.914 at the centre)"},
+          {"format", "sets", "\"sets\", or \"tiebreak\": every set is one tie-break game"},
+          {"sets_to_win", 1, "sets that win the match (best of 2n-1)"},
+          {"games_per_set", 6, "games that win a set, by 2; a tie-break at n-n"},
+          {"tiebreak_points", 7, "points that win a tie-break game, by 2"},
+          {"max_rally_s", 10.0, "no stroke for this long: the side to play loses the point"}};
+}
+
+RacketMatchConfig RacketSport::config(const std::string& mode,
+                                      const nlohmann::json& options) const {
+  const nlohmann::json s = merge_settings(name(), settings(), options);
+  RacketMatchConfig c;
+  c.mode = mode_or_throw(name(), mode);
+  c.max_rally_s = s.at("max_rally_s").get<double>();
+  if (!(c.max_rally_s >= 1 && c.max_rally_s <= 60))
+    throw std::invalid_argument("setting \"max_rally_s\" must be 1..60 seconds");
+  if (table_tennis_) {
+    c.game = table_tennis_game();
+    c.table_tennis.games_to_win = positive(s, "games_to_win", 4);
+    c.table_tennis.points_per_game = positive(s, "points_per_game", 21);
+    return c;
+  }
+  const double net = s.at("net_height").get<double>();
+  if (!(net >= 0.5 && net <= 1.5))
+    throw std::invalid_argument("setting \"net_height\" must be 0.5..1.5 m");
+  c.game = tennis_game(net);
+  const std::string format = s.at("format");
+  if (format != "sets" && format != "tiebreak")
+    throw std::invalid_argument("setting \"format\" must be \"sets\" or \"tiebreak\", got \"" +
+                                format + "\"");
+  c.tennis.tiebreak_only = format == "tiebreak";
+  c.tennis.sets_to_win = positive(s, "sets_to_win", 3);
+  c.tennis.games_per_set = positive(s, "games_per_set", 6);
+  c.tennis.tiebreak_points = positive(s, "tiebreak_points", 10);
+  return c;
+}
+
+std::unique_ptr<SportMatch> RacketSport::create(const MatchSettings& settings) const {
+  MatchSettings s = settings;
+  if (s.time_limit_s <= 0) s.time_limit_s = default_time_limit_s();
+  return std::make_unique<RacketMatch>(config(s.mode, s.options), s);
+}
+
+Layout RacketSport::layout(const std::string& mode) const {
+  const RacketMatchConfig c = config(mode, nlohmann::json::object());
+  const int slots = c.mode == RacketMode::BallReturn ? 1 : (c.mode == RacketMode::Singles ? 2 : 4);
+  Layout l;
+  l.observation = {{"self", 358, "m, m/s, rad/s",
+                    "root height; 23 body positions rel. root; 24 tan-norm rotations; 24 linear "
+                    "and 24 angular velocities; heading frame, clamped to +-5"}};
+  for (auto& b : racket_task_layout(slots)) l.observation.push_back(b);
+  l.action = {{"joint_targets", 69, "a (target = pi*a rad; knee flexion 5*a)",
+               "23 joints x (x, y, z) hinges in body order, L_Hip first"}};
+  l.reward_terms = racket_reward_names();
+  return l;
+}
+
+}  // namespace olympics::sports::racket

@@ -1,0 +1,119 @@
+#include "racket/rally_referee.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace olympics::sports::racket {
+
+RallyReferee::RallyReferee(const RacketGame& game, std::vector<int> slot_teams, bool doubles,
+                           bool alternate_hitters)
+    : game_(game),
+      teams_(std::move(slot_teams)),
+      doubles_(doubles),
+      alternate_(alternate_hitters) {}
+
+void RallyReferee::start_point(int receiving_team, int first_hitter, double time) {
+  striker_ = 1 - receiving_team;
+  last_hitter_ = -1;
+  last_hit_time_ = -1;
+  bounces_ = 0;
+  netted_ = false;
+  next_hitter_.assign(2, -1);
+  if (alternate_) next_hitter_[receiving_team] = first_hitter;
+  point_start_ = time;
+  run_surface_ = -1;
+  run_last_ = -1;
+  call_.reset();
+  events_ = nlohmann::json::array();
+}
+
+void RallyReferee::event(const char* name, double time, int slot) {
+  nlohmann::json e = {{"call", name}, {"t", std::round(time * 1000) / 1000}};
+  if (slot >= 0) e["slot"] = slot;
+  events_.push_back(std::move(e));
+}
+
+void RallyReferee::lose(int team, int culprit, const std::string& reason) {
+  if (call_) return;
+  call_ = PointCall{1 - team, team, culprit, reason};
+  nlohmann::json e = {{"call", "point"}, {"winner_team", 1 - team}, {"reason", reason}};
+  if (culprit >= 0) e["culprit_slot"] = culprit;
+  events_.push_back(std::move(e));
+}
+
+void RallyReferee::racket_hit(int slot, double time) {
+  if (call_) return;
+  const int team = teams_[slot];
+  if (slot == last_hitter_ && time - last_hit_time_ < kSameStrokeS) {
+    last_hit_time_ = time;  // the ball still on the strings: one stroke
+    return;
+  }
+  event("hit", time, slot);
+  if (team == striker_) return lose(team, slot, "double_hit");
+  if (game_.on_table && bounces_ == 0) return lose(team, slot, "volley");
+  if (alternate_ && next_hitter_[team] >= 0 && next_hitter_[team] != slot)
+    return lose(team, slot, "wrong_hitter");
+  if (alternate_) {
+    for (int partner = 0; partner < static_cast<int>(teams_.size()); ++partner)
+      if (teams_[partner] == team && partner != slot) next_hitter_[team] = partner;
+  }
+  striker_ = team;
+  last_hitter_ = slot;
+  last_hit_time_ = time;
+  bounces_ = 0;
+  netted_ = false;
+  run_surface_ = -1;
+}
+
+void RallyReferee::surface_contact(ArenaSurface surface, const Eigen::Vector3d& where,
+                                   double time) {
+  if (call_) return;
+  const bool continuing = surface == run_surface_ && time - run_last_ < kRollingGapS;
+  run_last_ = time;
+  if (continuing) {
+    if (time - run_start_ < kDeadBallS) return;
+    run_start_ = time;  // the ball stopped here: it counts as bouncing again, where it lies
+    if (surface == kNet) return lose(striker_, last_hitter_, "net");
+    event("dead_ball", time);
+    return bounce(surface, where, time);
+  }
+  run_surface_ = surface;
+  run_start_ = time;
+  if (surface == kNet) {
+    if (!netted_) event("net", time);
+    netted_ = true;
+    return;
+  }
+  bounce(surface, where, time);
+}
+
+void RallyReferee::bounce(ArenaSurface surface, const Eigen::Vector3d& where, double time) {
+  const int receiver = 1 - striker_;
+  const bool on_play_surface = (surface == kTable) == game_.on_table;
+  event(on_play_surface ? "bounce" : "floor", time);
+  events_.back()["x"] = std::round(where.x() * 100) / 100;
+  events_.back()["y"] = std::round(where.y() * 100) / 100;
+  if (bounces_ >= 1) return lose(receiver, -1, on_play_surface ? "double_bounce" : "missed");
+  if (on_play_surface && game_.in_half(receiver, where.x(), where.y(), doubles_)) {
+    bounces_ = 1;
+    return;
+  }
+  // The stroke did not land in: short of the net, or outside the lines (or off the table).
+  const bool own_half =
+      where.x() * RacketGame::side_sign(striker_) > 0 && std::abs(where.x()) <= game_.half_length;
+  const char* reason = own_half ? (netted_ ? "net" : "not_over") : "out";
+  lose(striker_, last_hitter_, reason);
+}
+
+void RallyReferee::body_touch(int slot, double time) {
+  if (call_) return;
+  event("body_touch", time, slot);
+  lose(teams_[slot], slot, "body_touch");
+}
+
+void RallyReferee::check_stall(double time, double max_rally_s) {
+  if (call_ || time - std::max(point_start_, last_hit_time_) < max_rally_s) return;
+  lose(1 - striker_, -1, "stalled");
+}
+
+}  // namespace olympics::sports::racket

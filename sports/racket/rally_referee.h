@@ -1,0 +1,89 @@
+// The referee of one rally in tennis or table tennis: it is told what the ball touched (a
+// racket, the ground, the table, the net, a body) and calls the point by the rules (SPORTS.md):
+//
+// - after a team strikes, the ball must first bounce in the other team's half (tennis: on the
+//   ground inside the lines; table tennis: on the table); touching the net on the way is fine;
+// - the receiving team must strike before the ball bounces twice (table tennis: after exactly one
+//   bounce on the table, never before), and only once per crossing (no double hits);
+// - a ball that touches a player's body loses the point for that player's team;
+// - table-tennis doubles: partners strike alternately;
+// - a ball that stops (rolls or rests for 0.3 s) counts as bounced again where it lies.
+//
+// Each point starts with a ball fed towards one team, which plays the first shot (the feed
+// counts as the other team's stroke). The referee keeps no physics: it is tested with made-up
+// sequences of touches.
+#pragma once
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "racket/racket_game.h"
+
+namespace olympics::sports::racket {
+
+struct PointCall {
+  int winner_team = -1;
+  int loser_team = -1;
+  int culprit_slot = -1;  // the player whose action lost it, when one did
+  std::string reason;     // "out", "net", "double_bounce", "body_touch", ...
+};
+
+class RallyReferee {
+ public:
+  // slot_teams: team of each slot; 2v2 table tennis sets alternate_hitters.
+  RallyReferee(const RacketGame& game, std::vector<int> slot_teams, bool doubles,
+               bool alternate_hitters);
+
+  // A new point: the ball is fed towards `receiving_team`; `first_hitter` is the slot expected to
+  // play it when partners alternate (-1: either).
+  void start_point(int receiving_team, int first_hitter, double time);
+
+  // The ball touched something at `time` (seconds since the match began).
+  void racket_hit(int slot, double time);
+  void surface_contact(ArenaSurface surface, const Eigen::Vector3d& where, double time);
+  void body_touch(int slot, double time);
+  // `team` loses the point for a reason found outside the ball's touches (a fall).
+  void concede(int team, int culprit, const std::string& reason) { lose(team, culprit, reason); }
+  // No stroke and no decision for this long: the team that had to play the ball loses
+  // ("stalled"), e.g. a ball stuck where nobody reaches it.
+  void check_stall(double time, double max_rally_s);
+
+  const std::optional<PointCall>& call() const { return call_; }
+  int striker_team() const { return striker_; }
+  int receiver_team() const { return 1 - striker_; }
+  int last_hitter() const { return last_hitter_; }  // -1: none this crossing (the feed)
+  int bounces() const { return bounces_; }          // on the receiver's side since the last stroke
+  bool netted() const { return netted_; }
+  // The referee's calls so far this point (hit, bounce, net, ...), for the match's info.
+  const nlohmann::json& events() const { return events_; }
+
+  static constexpr double kSameStrokeS = 0.15;  // racket contacts closer than this are one stroke
+  static constexpr double kRollingGapS = 0.05;  // contacts closer than this are one contact
+  static constexpr double kDeadBallS = 0.3;     // continuous contact this long: the ball stopped
+
+ private:
+  void bounce(ArenaSurface surface, const Eigen::Vector3d& where, double time);
+  void lose(int team, int culprit, const std::string& reason);
+  void event(const char* name, double time, int slot = -1);
+
+  RacketGame game_;
+  std::vector<int> teams_;
+  bool doubles_, alternate_;
+  int striker_ = 0;
+  int last_hitter_ = -1;
+  double last_hit_time_ = -1;
+  int bounces_ = 0;
+  bool netted_ = false;
+  std::vector<int> next_hitter_;  // per team, when partners alternate (-1: either)
+  double point_start_ = 0;
+  // The current run of contacts with one surface (rolling / resting).
+  int run_surface_ = -1;
+  double run_start_ = 0, run_last_ = -1;
+  std::optional<PointCall> call_;
+  nlohmann::json events_ = nlohmann::json::array();
+};
+
+}  // namespace olympics::sports::racket
