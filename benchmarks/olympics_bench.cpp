@@ -2,10 +2,12 @@
 //
 //   olympics-bench physics [--json] [--seconds S] [--repeats R] [--threads T] [--no-mujoco]
 //   olympics-bench server  [--json] [--seconds S] [--matches M] [--workers W]
+//   olympics-bench racket  [--json] [--episodes N] [--seconds S] [--repeats R]
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
 #include "physics_bench.h"
+#include "racket_bench.h"
 #include "server_bench.h"
 
 int main(int argc, char** argv) {
@@ -33,6 +35,16 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   bool no_pin = false;
   serv->add_flag("--no-pin", no_pin, "let the OS place the server's workers");
+  olympics::bench::RacketBenchOptions racket;
+  auto* rack = app.add_subcommand(
+      "racket", "tennis / table tennis: scripted touch rate, match ticks/s vs bare physics");
+  rack->add_flag("--json", json, "print one JSON object instead of a table");
+  rack->add_option("--episodes", racket.episodes, "ball-return episodes per sport and policy")
+      ->check(CLI::PositiveNumber);
+  rack->add_option("--seconds", racket.seconds, "wall seconds per speed measurement")
+      ->check(CLI::PositiveNumber);
+  rack->add_option("--repeats", racket.repeats, "interleaved repeats (median reported)")
+      ->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);
 
   if (*phys) {
@@ -50,6 +62,13 @@ int main(int argc, char** argv) {
       std::printf("%s\n", report.dump(2).c_str());
     else
       olympics::bench::print_server_report(report);
+  }
+  if (*rack) {
+    auto report = olympics::bench::run_racket_bench(racket);
+    if (json)
+      std::printf("%s\n", report.dump(2).c_str());
+    else
+      olympics::bench::print_racket_report(report);
   }
   return 0;
 }

@@ -18,10 +18,25 @@
 
 namespace {
 
+// With --calls: the referee's point calls and the score as they happen (from the observation's
+// info, so any agent of the match can follow it live).
+void print_calls(const olympics::client::Observation& obs) {
+  if (obs.info.empty()) return;
+  const auto info = nlohmann::json::parse(obs.info, nullptr, false);
+  if (!info.is_object() || !info.contains("events")) return;
+  for (const auto& e : info["events"]) {
+    if (e.value("call", "") != "point") continue;
+    std::string score = info.contains("score") ? info["score"].value("text", "") : "";
+    std::printf("tick %d: point to team %d (%s)  %s\n", obs.tick, e.value("winner_team", -1),
+                e.value("reason", "").c_str(), score.c_str());
+    std::fflush(stdout);
+  }
+}
+
 void play_one(olympics::client::MatchClient& client, const std::string& match_id,
               const std::vector<int>& slots, olympics::client::Policy& policy,
               const std::string& agent_name, const std::string& policy_name, int think_ms,
-              double timeout_s, bool json) {
+              double timeout_s, bool json, bool calls) {
   const auto match = client.join(match_id, slots, timeout_s);
   std::fprintf(stderr, "%s joined %s (%s %s) slots", agent_name.c_str(), match.match_id.c_str(),
                match.sport.c_str(), match.mode.c_str());
@@ -30,6 +45,7 @@ void play_one(olympics::client::MatchClient& client, const std::string& match_id
 
   std::vector<std::vector<float>> actions(slots.size(), std::vector<float>(match.action_size));
   while (auto obs = client.next(timeout_s)) {
+    if (calls) print_calls(*obs);
     if (obs->all_done()) break;
     for (size_t i = 0; i < obs->slots.size(); ++i) policy.act(obs->obs[i], actions[i]);
     if (think_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(think_ms));
@@ -80,6 +96,8 @@ int main(int argc, char** argv) {
   app.add_option("--seed", request.seed, "match seed");
   app.add_option("--time-limit", request.time_limit_s, "seconds (0: the sport's default)");
   app.add_flag("--realtime", request.realtime, "30 Hz clock instead of lockstep");
+  app.add_option("--options", request.options,
+                 "the sport's settings as JSON, e.g. '{\"format\": \"tiebreak\"}'");
   app.add_option("--server", request.server_id, "ask this server only");
   app.add_option("--slots", slots, "slots to play")->delimiter(',');
   app.add_option("--policy", policy_name, "zero, random");
@@ -97,6 +115,8 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--think-ms", think_ms, "sleep this long before each action (a slow policy)");
   app.add_flag("--json", json, "print the result as JSON");
+  bool calls = false;
+  app.add_flag("--calls", calls, "print the referee's point calls and the score as they happen");
   CLI11_PARSE(app, argc, argv);
   if (options.policy_id.empty()) options.policy_id = policy_name;
 
@@ -113,7 +133,7 @@ int main(int argc, char** argv) {
       }
       if (match_id.empty()) match_id = client.request_match(request, timeout_s).match_id;
       play_one(client, match_id, slots, *policy, options.agent_name, policy_name, think_ms,
-               timeout_s, json);
+               timeout_s, json, calls);
       match_id.clear();
     }
     return 0;

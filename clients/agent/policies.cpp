@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "mlp_snapshot.h"
+#include "scripted_policy.h"
 
 namespace olympics::client {
 namespace {
@@ -40,11 +41,14 @@ class SnapshotPolicy : public Policy {
 
 }  // namespace
 
-std::vector<std::string> policy_names() { return {"zero", "random", "mlp:<snapshot.safetensors>"}; }
+std::vector<std::string> policy_names() {
+  return {"zero", "random", "scripted", "mlp:<snapshot.safetensors>"};
+}
 
 std::unique_ptr<Policy> make_policy(const std::string& name, std::uint64_t seed) {
   if (name == "zero") return std::make_unique<ZeroPolicy>();
   if (name == "random") return std::make_unique<RandomPolicy>(seed);
+  if (name == "scripted") return std::make_unique<ScriptedRacketPolicy>();
   if (name.rfind("mlp:", 0) == 0) return std::make_unique<SnapshotPolicy>(name.substr(4));
   std::string known;
   for (const auto& n : policy_names()) known += (known.empty() ? "" : ", ") + n;
