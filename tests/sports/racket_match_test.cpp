@@ -1,0 +1,101 @@
+// Tennis and table-tennis matches as the server runs them: settings, equipment, determinism,
+// and whole matches that reach a score.
+#include "racket/racket_match.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/equipment.h"
+#include "core/humanoid_assets.h"
+#include "registry.h"
+
+namespace olympics::sports::racket {
+namespace {
+
+std::unique_ptr<SportMatch> make(const std::string& sport, const std::string& mode,
+                                 std::uint64_t seed, nlohmann::json options = {}) {
+  return sport_or_throw(sport).create({mode, seed, 120.0, options});
+}
+
+// Plays with constant actions (slot 1 may get others); returns the state hash after `ticks`
+// ticks (or the end).
+std::uint64_t play(SportMatch& m, int ticks, float a, float slot1 = NAN) {
+  std::vector<std::vector<float>> acts(m.slot_count(), std::vector<float>(69, a));
+  if (m.slot_count() > 1 && !std::isnan(slot1)) acts[1].assign(69, slot1);
+  std::vector<std::span<const float>> spans(acts.begin(), acts.end());
+  for (int t = 0; t < ticks && !m.outcome().match_over; ++t) m.step(spans);
+  return m.state_hash();
+}
+
+TEST(RacketSports, RegisteredWithModesAndSettings) {
+  for (const char* name : {"tennis", "table_tennis"}) {
+    const Sport& s = sport_or_throw(name);
+    EXPECT_EQ(s.modes(), (std::vector<std::string>{"ball_return", "1v1", "2v2"}));
+    EXPECT_EQ(make(name, "ball_return", 1)->slot_count(), 1);
+    EXPECT_EQ(make(name, "2v2", 1)->slot_count(), 4);
+    EXPECT_EQ(s.layout("1v1").observation_size(), make(name, "1v1", 1)->obs_size());
+  }
+}
+
+TEST(RacketSports, BadSettingsAreRefusedWithTheKnownOnes) {
+  try {
+    make("tennis", "1v1", 1, {{"net_hieght", 0.9}});
+    FAIL() << "accepted an unknown setting";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("net_height"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(make("tennis", "1v1", 1, {{"net_height", "high"}}), std::invalid_argument);
+  EXPECT_THROW(make("tennis", "1v1", 1, {{"net_height", 7.0}}), std::invalid_argument);
+  EXPECT_THROW(make("tennis", "1v1", 1, {{"format", "marathon"}}), std::invalid_argument);
+  EXPECT_THROW(make("table_tennis", "3v3", 1), std::invalid_argument);
+  EXPECT_NO_THROW(make("tennis", "1v1", 1, {{"net_height", 0.914}, {"format", "tiebreak"}}));
+}
+
+TEST(RacketSports, EquipmentAddsItsMassToTheHand) {
+  core::ModelSpec bare = core::load_humanoid(core::HumanoidKind::Smpl);
+  core::ModelSpec racket = bare, paddle = bare;
+  core::attach_equipment(racket, core::tennis_racket());
+  core::attach_equipment(paddle, core::table_tennis_paddle());
+  core::PhysicsWorld world;
+  core::Humanoid h0(world, bare), h1(world, racket), h2(world, paddle);
+  // Handle 0.14 kg + head 0.42 kg; the paddle (0.08 kg) replaces the 0.16 kg hand box.
+  EXPECT_NEAR(h1.total_mass() - h0.total_mass(), 0.141 + 0.424, 0.01);
+  EXPECT_NEAR(h2.total_mass() - h0.total_mass(), 0.080 - 0.161, 0.01);
+}
+
+TEST(RacketSports, SameSeedAndActionsGiveBitIdenticalMatches) {
+  for (const char* name : {"tennis", "table_tennis"}) {
+    auto a = make(name, "1v1", 9), b = make(name, "1v1", 9), c = make(name, "1v1", 10);
+    const auto ha = play(*a, 400, 0.05f), hb = play(*b, 400, 0.05f), hc = play(*c, 400, 0.05f);
+    EXPECT_EQ(ha, hb) << name;
+    EXPECT_NE(ha, hc) << name;
+    EXPECT_EQ(a->outcome().info.dump(), b->outcome().info.dump());
+  }
+}
+
+// Two identical zero-action players never break each other's serve (the receiver always loses,
+// so a tie-break stays level); here slot 1 holds a pose it cannot stand in, and falls.
+TEST(RacketSports, TiebreakMatchReachesAFinalScore) {
+  auto m = make("tennis", "1v1", 3, {{"format", "tiebreak"}});
+  play(*m, 30 * 120, 0.0f, 0.3f);
+  ASSERT_TRUE(m->outcome().match_over);
+  EXPECT_EQ(m->outcome().reason, "match_won");
+  const auto& score = m->outcome().info.at("score");
+  EXPECT_EQ(score.at("winner"), m->outcome().winner_team);
+  EXPECT_EQ(m->outcome().scores[m->outcome().winner_team], 1.0f);
+  EXPECT_GE(m->outcome().info.at("points").size(), 7u);
+}
+
+TEST(RacketSports, RewardTermsAreReportedByName) {
+  auto m = make("table_tennis", "ball_return", 4);
+  EXPECT_EQ(m->reward_terms(), (std::vector<std::string>{"racket", "contact", "landing", "hits"}));
+  play(*m, 1, 0.0f);
+  const auto& terms = m->outcome().terms[0];
+  EXPECT_GT(terms[0], 0.0f);  // not struck yet: the racket term guides towards the ball
+  EXPECT_EQ(terms[1], 0.0f);
+  EXPECT_FLOAT_EQ(m->outcome().reward[0], terms[0] + terms[1] + terms[2] + terms[3]);
+}
+
+}  // namespace
+}  // namespace olympics::sports::racket
