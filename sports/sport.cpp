@@ -4,6 +4,28 @@
 
 namespace olympics::sports {
 
+void TickOutcome::end(const std::string& why, int winner) {
+  match_over = true;
+  reason = why;
+  winner_team = winner;
+  for (auto& d : done) d = 1;
+}
+
+int forfeit_winner(int team_count, int losing_team) {
+  return team_count == 2 && losing_team >= 0 ? 1 - losing_team : -1;
+}
+
+LayoutBlock smpl_self_observation_block() {
+  return {"self", kSmplSelfObservation, "m, m/s, rad/s",
+          "root height; 23 body positions rel. root; 24 tan-norm rotations; 24 linear and 24 "
+          "angular velocities; heading frame, clamped to +-5"};
+}
+
+LayoutBlock smpl_action_block() {
+  return {"joint_targets", 69, "a (target = pi*a rad; knee flexion 5*a)",
+          "23 joints x (x, y, z) hinges in body order, L_Hip first"};
+}
+
 int Layout::observation_size() const {
   int n = 0;
   for (const auto& b : observation) n += b.size;

@@ -33,7 +33,14 @@ struct TickOutcome {
   int winner_team = -1;                            // -1: draw / no winner
   std::vector<float> scores;                       // per team
   nlohmann::json info = nlohmann::json::object();  // referee calls, events
+
+  // The match is over for `why`: every slot is done; `winner` is a team or -1.
+  void end(const std::string& why, int winner);
 };
+
+// Who wins when `losing_team` forfeits: the other team of two; with more teams, or when nobody
+// is to blame (-1), nobody.
+int forfeit_winner(int team_count, int losing_team);
 
 // One named block of an observation or action vector, for `describe`.
 struct LayoutBlock {
@@ -42,6 +49,11 @@ struct LayoutBlock {
   std::string units;
   std::string meaning;
 };
+
+// How every SMPL sport's observation starts (the self observation) and what its action is.
+inline constexpr int kSmplSelfObservation = 358;
+LayoutBlock smpl_self_observation_block();
+LayoutBlock smpl_action_block();
 
 struct Layout {
   std::vector<LayoutBlock> observation;

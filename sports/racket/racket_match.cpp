@@ -15,7 +15,7 @@
 namespace olympics::sports::racket {
 namespace {
 
-constexpr int kSelfObs = 358;
+constexpr int kSelfObs = kSmplSelfObservation;
 constexpr int kTaskObs = 26;
 constexpr int kPerOther = 3;
 
@@ -32,18 +32,6 @@ const core::ModelSpec& equipped_humanoid(const core::EquipmentSpec& equipment) {
     return s;
   }();
   return equipment.name == "racket" ? racket : paddle;
-}
-
-std::vector<int> mode_teams(RacketMode mode) {
-  switch (mode) {
-    case RacketMode::BallReturn:
-      return {0};
-    case RacketMode::Singles:
-      return {0, 1};
-    case RacketMode::Doubles:
-      return {0, 0, 1, 1};
-  }
-  return {};
 }
 
 // Index of a slot among its team's slots (0 or 1).
@@ -63,6 +51,18 @@ void put(std::span<float> out, size_t& k, const Eigen::Vector3d& v) {
 }
 
 }  // namespace
+
+std::vector<int> racket_mode_teams(RacketMode mode) {
+  switch (mode) {
+    case RacketMode::BallReturn:
+      return {0};
+    case RacketMode::Singles:
+      return {0, 1};
+    case RacketMode::Doubles:
+      return {0, 0, 1, 1};
+  }
+  return {};
+}
 
 std::vector<LayoutBlock> racket_task_layout(int slots) {
   std::vector<LayoutBlock> blocks = {
@@ -91,7 +91,7 @@ std::vector<std::string> racket_reward_names() { return {"racket", "contact", "l
 
 RacketMatch::RacketMatch(const RacketMatchConfig& config, const MatchSettings& settings)
     : config_(config),
-      teams_(mode_teams(config.mode)),
+      teams_(racket_mode_teams(config.mode)),
       time_limit_ticks_(static_cast<int>(settings.time_limit_s * 30.0 + 0.5)),
       rng_(settings.seed),
       flight_(config.game.ball, config.game.ball.restitution, config.game.ball.friction),
@@ -107,6 +107,8 @@ RacketMatch::RacketMatch(const RacketMatchConfig& config, const MatchSettings& s
     scene_.add_humanoid(spec, start_placement(i));
     entity_of_slot_.push_back(entity_of(scene_.humanoid(i)));
     falls_.emplace_back(spec, std::vector<std::string>{config_.game.equipment.hand});
+    const core::EquipmentSpec& e = config_.game.equipment;
+    discs_.push_back({i, e.face, {}, {}, e.restitution, e.friction});
   }
   const int first_server = std::uniform_int_distribution<int>(0, 1)(rng_);
   if (config_.mode != RacketMode::BallReturn) {
@@ -118,7 +120,6 @@ RacketMatch::RacketMatch(const RacketMatchConfig& config, const MatchSettings& s
   target_.assign(n, Eigen::Vector2d::Zero());
   struck_.assign(n, 0);
   hits_.assign(n, 0);
-  touches_.assign(n, 0);
   reaction_.assign(n, Eigen::Vector3d::Zero());
   reaction_at_.assign(n, Eigen::Vector3d::Zero());
   outcome_.reward.assign(n, 0.0f);
@@ -185,13 +186,8 @@ void RacketMatch::start_point() {
 void RacketMatch::physics_step(std::vector<core::BallContact>& contacts) {
   const double h = scene_.settings().physics_dt();
   const int n = slot_count();
-  std::vector<core::MovingDisc> discs(n);
   for (int i = 0; i < n; ++i) {
-    discs[i].id = i;
-    discs[i].disc = config_.game.equipment.face;
-    discs[i].from = racket_pose(i);
-    discs[i].restitution = config_.game.equipment.restitution;
-    discs[i].friction = config_.game.equipment.friction;
+    discs_[i].from = racket_pose(i);
     if (!reaction_[i].isZero()) {  // the ball's push on the racket, spread over this step
       const Eigen::Vector3d f = reaction_[i] / h;
       const Eigen::Vector3d& at = reaction_at_[i];
@@ -201,10 +197,10 @@ void RacketMatch::physics_step(std::vector<core::BallContact>& contacts) {
     }
   }
   scene_.physics_step();
-  for (int i = 0; i < n; ++i) discs[i].to = racket_pose(i);
+  for (int i = 0; i < n; ++i) discs_[i].to = racket_pose(i);
   const Eigen::Vector3d from = flight_.position();
   contacts.clear();
-  flight_.step(h, arena_, discs, contacts);
+  flight_.step(h, arena_, discs_, contacts);
   const double t0 = time_;
   time_ += h;
   for (const auto& c : contacts) handle_contact(c, t0 + c.time);
@@ -227,7 +223,6 @@ void RacketMatch::handle_contact(const core::BallContact& c, double t) {
   const size_t before = referee_.events().size();
   referee_.racket_hit(slot, t);
   if (referee_.events().size() == before) return;  // the same stroke, still on the strings
-  ++touches_[slot];
   if (referee_.call() || referee_.last_hitter() != slot) return;
   struck_[slot] = 1;
   for (int i = 0; i < slot_count(); ++i)
@@ -309,7 +304,7 @@ void RacketMatch::settle_point() {
     if (ball_return) {
       points_.push_back(point);
       outcome_.info = {{"events", tick_events_}, {"points", points_}, {"returns_in", hits_[0]}};
-      return finish("point_lost: " + call->reason, -1);
+      return outcome_.end("point_lost: " + call->reason, -1);
     }
     scoreboard_->point_won(call->winner_team);
     point["score"] = scoreboard_->text();
@@ -319,7 +314,7 @@ void RacketMatch::settle_point() {
     if (scoreboard_->over()) {
       outcome_.info = {
           {"events", tick_events_}, {"score", scoreboard_->to_json()}, {"points", points_}};
-      return finish("match_won", scoreboard_->winner());
+      return outcome_.end("match_won", scoreboard_->winner());
     }
     start_point();
   }
@@ -328,20 +323,13 @@ void RacketMatch::settle_point() {
   if (tick_ >= time_limit_ticks_) {
     outcome_.info["points"] = points_;
     for (auto& t : outcome_.truncated) t = 1;
-    finish("time_limit", scoreboard_ ? scoreboard_->leader() : -1);
+    outcome_.end("time_limit", scoreboard_ ? scoreboard_->leader() : -1);
   }
-}
-
-void RacketMatch::finish(const std::string& reason, int winner) {
-  outcome_.match_over = true;
-  outcome_.reason = reason;
-  outcome_.winner_team = winner;
-  for (auto& d : outcome_.done) d = 1;
 }
 
 void RacketMatch::forfeit(int losing_team, const std::string& reason) {
   if (outcome_.match_over) return;
-  finish(reason, team_count() == 2 && losing_team >= 0 ? 1 - losing_team : -1);
+  outcome_.end(reason, forfeit_winner(team_count(), losing_team));
 }
 
 int RacketMatch::obs_size() const { return kSelfObs + kTaskObs + kPerOther * (slot_count() - 1); }

@@ -36,6 +36,9 @@ struct RacketMatchConfig {
   double max_rally_s = 10;         // no stroke for this long: the side to play loses the point
 };
 
+// The team of each slot in a mode.
+std::vector<int> racket_mode_teams(RacketMode mode);
+
 // The task observation's blocks (after the self observation), shared with `describe`.
 std::vector<LayoutBlock> racket_task_layout(int slots);
 std::vector<std::string> racket_reward_names();
@@ -57,13 +60,8 @@ class RacketMatch : public SportMatch {
   void forfeit(int losing_team, const std::string& reason) override;
   std::uint64_t state_hash() const override;
 
-  // For tests and benchmarks.
-  const core::BallFlight& ball() const { return flight_; }
-  core::Pose racket_pose(int slot) const;
-  const RallyReferee& referee() const { return referee_; }
-  const Scoreboard* scoreboard() const { return scoreboard_.get(); }
+  // Returns that landed in this episode (the benchmark's count).
   int returns_in(int slot) const { return hits_[slot]; }
-  int racket_touches(int slot) const { return touches_[slot]; }
 
  private:
   void start_point();
@@ -72,8 +70,8 @@ class RacketMatch : public SportMatch {
   void handle_contact(const core::BallContact& c, double t);
   void probe_bodies(const Eigen::Vector3d& from, double t);
   void settle_point();
-  void finish(const std::string& reason, int winner);
   core::RootPlacement start_placement(int slot) const;
+  core::Pose racket_pose(int slot) const;
   Eigen::Vector2d draw_target(int slot);
 
   RacketMatchConfig config_;
@@ -87,12 +85,12 @@ class RacketMatch : public SportMatch {
   core::BallFlight flight_;
   core::BodyProbe probe_;
   std::vector<core::ArenaBox> arena_;
+  std::vector<core::MovingDisc> discs_;  // per slot: its racket face; poses set each step
   RallyReferee referee_;
   std::unique_ptr<Scoreboard> scoreboard_;
   std::vector<Eigen::Vector2d> target_;    // per slot: where its next stroke should land
   std::vector<std::uint8_t> struck_;       // per slot: C, struck the ball coming to it
   std::vector<int> hits_;                  // per slot: returns that landed in
-  std::vector<int> touches_;               // per slot: racket strokes
   std::vector<Eigen::Vector3d> reaction_;  // per slot: impulse on the hand for the next step
   std::vector<Eigen::Vector3d> reaction_at_;
   int served_points_ = 0;

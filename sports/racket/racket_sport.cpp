@@ -78,14 +78,11 @@ std::unique_ptr<SportMatch> RacketSport::create(const MatchSettings& settings) c
 
 Layout RacketSport::layout(const std::string& mode) const {
   const RacketMatchConfig c = config(mode, nlohmann::json::object());
-  const int slots = c.mode == RacketMode::BallReturn ? 1 : (c.mode == RacketMode::Singles ? 2 : 4);
+  const int slots = static_cast<int>(racket_mode_teams(c.mode).size());
   Layout l;
-  l.observation = {{"self", 358, "m, m/s, rad/s",
-                    "root height; 23 body positions rel. root; 24 tan-norm rotations; 24 linear "
-                    "and 24 angular velocities; heading frame, clamped to +-5"}};
+  l.observation = {smpl_self_observation_block()};
   for (auto& b : racket_task_layout(slots)) l.observation.push_back(b);
-  l.action = {{"joint_targets", 69, "a (target = pi*a rad; knee flexion 5*a)",
-               "23 joints x (x, y, z) hinges in body order, L_Hip first"}};
+  l.action = {smpl_action_block()};
   l.reward_terms = racket_reward_names();
   return l;
 }

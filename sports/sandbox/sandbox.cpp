@@ -11,7 +11,7 @@
 namespace olympics::sports {
 namespace {
 
-constexpr int kSelfObs = 358;
+constexpr int kSelfObs = kSmplSelfObservation;
 constexpr int kPerOther = 7;
 
 // Mode -> team of each slot.
@@ -55,17 +55,14 @@ Layout SandboxSport::layout(const std::string& mode) const {
   const int others = static_cast<int>(teams_or_throw(mode).size()) - 1;
   Layout l;
   l.observation = {
-      {"self", kSelfObs, "m, m/s, rad/s",
-       "root height; 23 body positions rel. root; 24 tan-norm rotations; 24 linear and 24 "
-       "angular velocities; heading frame, clamped to +-5"},
+      smpl_self_observation_block(),
       {"time_remaining", 1, "fraction", "share of the time limit still to play"},
   };
   if (others > 0)
     l.observation.push_back({"others", kPerOther * others, "m, m/s, flag",
                              "per other slot in slot order: root position (3) and root velocity "
                              "(3) in this humanoid's heading frame, fallen (1)"});
-  l.action = {{"joint_targets", 69, "a (target = pi*a rad; knee flexion 5*a)",
-               "23 joints x (x, y, z) hinges in body order, L_Hip first"}};
+  l.action = {smpl_action_block()};
   l.reward_terms = {"alive", "fall"};
   return l;
 }
@@ -147,35 +144,29 @@ void SandboxMatch::decide_end() {
     if (!fallen_[i]) team_standing[teams_[i]] = true, ++standing;
   int teams_standing =
       static_cast<int>(std::count(team_standing.begin(), team_standing.end(), true));
+  std::string reason;
   if (tick_ >= time_limit_ticks_)
-    outcome_.reason = "time_limit";
+    reason = "time_limit";
   else if (standing == 0)
-    outcome_.reason = "all_fell";
+    reason = "all_fell";
   else if (team_count_ > 1 && teams_standing == 1)
-    outcome_.reason = "last_team_standing";
+    reason = "last_team_standing";
   else
     return;
-  outcome_.match_over = true;
-  for (int i = 0; i < slot_count(); ++i) {
-    outcome_.done[i] = 1;
-    if (outcome_.reason == "time_limit" && !fallen_[i]) outcome_.truncated[i] = 1;
-  }
   // Winner: most points; a tie for the most is a draw. Points are exact multiples of 1/30 s
   // accumulated in the same order, so equal standing times compare equal.
   auto best = std::max_element(outcome_.scores.begin(), outcome_.scores.end());
   bool tie = std::count(outcome_.scores.begin(), outcome_.scores.end(), *best) > 1;
-  outcome_.winner_team =
-      (team_count_ > 1 && !tie) ? static_cast<int>(best - outcome_.scores.begin()) : -1;
-  if (team_count_ == 1) outcome_.winner_team = -1;
+  outcome_.end(reason,
+               (team_count_ > 1 && !tie) ? static_cast<int>(best - outcome_.scores.begin()) : -1);
+  if (reason == "time_limit")
+    for (int i = 0; i < slot_count(); ++i)
+      if (!fallen_[i]) outcome_.truncated[i] = 1;
 }
 
 void SandboxMatch::forfeit(int losing_team, const std::string& reason) {
   if (outcome_.match_over) return;
-  outcome_.match_over = true;
-  outcome_.reason = reason;
-  for (auto& d : outcome_.done) d = 1;
-  outcome_.winner_team = -1;  // with more than two teams, or when nobody is to blame: no winner
-  if (team_count_ == 2 && losing_team >= 0) outcome_.winner_team = 1 - losing_team;
+  outcome_.end(reason, forfeit_winner(team_count_, losing_team));
 }
 
 std::uint64_t SandboxMatch::state_hash() const { return core::state_hash(scene_); }
