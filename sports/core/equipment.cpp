@@ -5,8 +5,25 @@
 namespace olympics::core {
 namespace {
 
-// A cylinder lies along its local z; these turn local z onto the hand's -y axis.
+// A cylinder lies along its local z; this turns local z onto the hand's -y axis.
 const Eigen::Quaterniond kAlongMinusY(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()));
+
+// The striking disc at y = `centre_y` in the hand frame (axis: the hand's z): a mass-only geom (the
+// ball meets it through BallFlight, not ODE), and the face the ball is swept against.
+void add_face(EquipmentSpec& e, const char* name, double radius, double half_thickness,
+              double centre_y, double density) {
+  GeomSpec g;
+  g.name = name;
+  g.shape = GeomShape::Cylinder;
+  g.pos = {0, centre_y, 0};
+  g.radius = radius;
+  g.half_length = half_thickness;
+  g.density = density;
+  g.collides = false;
+  e.geoms.push_back(g);
+  e.face = {radius, half_thickness};
+  e.face_centre = g.pos;
+}
 
 }  // namespace
 
@@ -21,17 +38,8 @@ EquipmentSpec tennis_racket() {
   handle.radius = 0.016;
   handle.half_length = 0.175;
   handle.mass = M_PI * 0.016 * 0.016 * 0.35 * 500;  // the cylinder's, 0.14 kg
-  GeomSpec head;
-  head.name = "racket_head";
-  head.shape = GeomShape::Cylinder;
-  head.pos = {0, -0.35, 0};
-  head.radius = 0.15;
-  head.half_length = 0.02;
-  head.density = 150;
-  head.collides = false;
-  e.geoms = {handle, head};
-  e.face = {0.15, 0.02};
-  e.face_centre = head.pos;
+  e.geoms = {handle};
+  add_face(e, "racket_head", 0.15, 0.02, -0.35, 150);
   e.restitution = 0.8;
   e.friction = 0.8;
   return e;
@@ -41,17 +49,7 @@ EquipmentSpec table_tennis_paddle() {
   EquipmentSpec e;
   e.name = "paddle";
   e.replaces_hand_geoms = true;
-  GeomSpec blade;
-  blade.name = "paddle";
-  blade.shape = GeomShape::Cylinder;
-  blade.pos = {0, -0.12, 0};
-  blade.radius = 0.08;
-  blade.half_length = 0.01;
-  blade.density = 200;
-  blade.collides = false;
-  e.geoms = {blade};
-  e.face = {0.08, 0.01};
-  e.face_centre = blade.pos;
+  add_face(e, "paddle", 0.08, 0.01, -0.12, 200);
   e.restitution = 0.85;
   e.friction = 0.8;
   return e;

@@ -14,6 +14,16 @@ std::string pair_text(const std::array<int, 2>& a) {
   return buf;
 }
 
+// Finished sets or games, "6-4 3-6", then (while the match goes on) a space before the rest.
+std::string history_text(const std::vector<std::array<int, 2>>& finished, bool over) {
+  std::string out;
+  for (const auto& f : finished) {
+    if (!out.empty()) out += ' ';
+    out += pair_text(f);
+  }
+  return over || out.empty() ? out : out + " ";
+}
+
 // Won when reaching `target` with a lead of 2.
 bool won_by_two(const std::array<int, 2>& a, int team, int target) {
   return a[team] >= target && a[team] - a[1 - team] >= 2;
@@ -71,10 +81,8 @@ int TennisScore::leader() const {
 }
 
 std::string TennisScore::text() const {
-  std::string out;
-  for (const auto& s : finished_sets_) out += pair_text(s) + " ";
-  if (over()) return out.empty() ? out : out.substr(0, out.size() - 1);
-  out += pair_text(games_) + " ";
+  if (over()) return history_text(finished_sets_, true);
+  std::string out = history_text(finished_sets_, false) + pair_text(games_) + " ";
   if (in_tiebreak()) return out + "tie-break " + pair_text(points_);
   static const char* kCalls[] = {"0", "15", "30", "40"};
   if (points_[0] >= 3 && points_[1] >= 3) {
@@ -124,10 +132,7 @@ int TableTennisScore::leader() const {
 }
 
 std::string TableTennisScore::text() const {
-  std::string out;
-  for (const auto& g : finished_games_) out += pair_text(g) + " ";
-  if (over()) return out.empty() ? out : out.substr(0, out.size() - 1);
-  return out + pair_text(points_);
+  return history_text(finished_games_, over()) + (over() ? "" : pair_text(points_));
 }
 
 nlohmann::json TableTennisScore::to_json() const {

@@ -7,6 +7,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace olympics::sports::racket {
 
@@ -14,8 +15,8 @@ class Scoreboard {
  public:
   virtual ~Scoreboard() = default;
   virtual void point_won(int team) = 0;
-  virtual bool over() const = 0;
-  virtual int winner() const = 0;  // -1 until over
+  bool over() const { return winner_ >= 0; }
+  int winner() const { return winner_; }  // -1 until over
   // The team that serves the next point (in this project: the team the point's first ball is
   // fed to, which plays the first shot).
   virtual int server() const = 0;
@@ -30,6 +31,7 @@ class Scoreboard {
 
  protected:
   int points_played_ = 0;
+  int winner_ = -1;
 };
 
 struct TennisFormat {
@@ -43,8 +45,6 @@ class TennisScore : public Scoreboard {
  public:
   TennisScore(const TennisFormat& format, int first_server);
   void point_won(int team) override;
-  bool over() const override { return winner_ >= 0; }
-  int winner() const override { return winner_; }
   int server() const override;
   std::array<float, 2> scores() const override;
   int leader() const override;
@@ -62,7 +62,6 @@ class TennisScore : public Scoreboard {
   int game_server_;  // serves the current game (the first point of a tie-break)
   std::array<int, 2> points_{}, games_{}, sets_{};
   std::vector<std::array<int, 2>> finished_sets_;
-  int winner_ = -1;
 };
 
 struct TableTennisFormat {
@@ -74,8 +73,6 @@ class TableTennisScore : public Scoreboard {
  public:
   TableTennisScore(const TableTennisFormat& format, int first_server);
   void point_won(int team) override;
-  bool over() const override { return winner_ >= 0; }
-  int winner() const override { return winner_; }
   int server() const override;
   std::array<float, 2> scores() const override;
   int leader() const override;
@@ -88,7 +85,6 @@ class TableTennisScore : public Scoreboard {
   int game_first_server_;
   std::array<int, 2> points_{}, games_{};
   std::vector<std::array<int, 2>> finished_games_;
-  int winner_ = -1;
 };
 
 }  // namespace olympics::sports::racket
