@@ -17,7 +17,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 struct EpisodeStats {
-  int episodes = 0, balls = 0, touched = 0, first_ball_touched = 0, returns_in = 0;
+  int episodes = 0, balls = 0, touched = 0, first_ball_touched = 0, returns_in = 0, falls = 0;
   long ticks = 0;
 };
 
@@ -43,6 +43,7 @@ EpisodeStats ball_return(const std::string& sport, const std::string& policy_nam
           if (balls == 1) first_touched = true;
         }
         if (call == "return_in") ++balls, touches_this_ball = 0;
+        if (call == "fall") ++st.falls;
       }
     }
     st.episodes++;
@@ -107,10 +108,13 @@ nlohmann::json run_racket_bench(const RacketBenchOptions& o) {
     nlohmann::json& r = report["sports"][sport];
     for (const std::string policy : {"scripted", "zero"}) {
       const EpisodeStats st = ball_return(sport, policy, o.episodes);
-      r["ball_return"][policy] = {
-          {"episodes", st.episodes},     {"balls", st.balls},
-          {"balls_touched", st.touched}, {"first_ball_touched", st.first_ball_touched},
-          {"returns_in", st.returns_in}, {"touch_fraction", double(st.touched) / st.balls}};
+      r["ball_return"][policy] = {{"episodes", st.episodes},
+                                  {"balls", st.balls},
+                                  {"balls_touched", st.touched},
+                                  {"first_ball_touched", st.first_ball_touched},
+                                  {"returns_in", st.returns_in},
+                                  {"falls", st.falls},
+                                  {"touch_fraction", double(st.touched) / st.balls}};
     }
     const auto equipment = sport == "tennis" ? core::tennis_racket() : core::table_tennis_paddle();
     std::vector<double> match, bare, ratio;
@@ -132,10 +136,10 @@ void print_racket_report(const nlohmann::json& report) {
     for (const auto& [policy, b] : r["ball_return"].items())
       std::printf(
           "  ball_return %-8s %d episodes: %d balls, %d touched (%.1f%%), first ball touched in "
-          "%d, %d returns in\n",
+          "%d, %d returns in, %d falls\n",
           policy.c_str(), b["episodes"].get<int>(), b["balls"].get<int>(),
           b["balls_touched"].get<int>(), 100 * b["touch_fraction"].get<double>(),
-          b["first_ball_touched"].get<int>(), b["returns_in"].get<int>());
+          b["first_ball_touched"].get<int>(), b["returns_in"].get<int>(), b["falls"].get<int>());
     const auto& s = r["speed_1v1"];
     std::printf("  1v1 ticks/s on one core: match %.0f, bare physics %.0f, ratio %.2f\n",
                 s["match_ticks_per_s"].get<double>(), s["bare_physics_ticks_per_s"].get<double>(),

@@ -1,94 +1,122 @@
 #include "scripted_policy.h"
 
-#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "smpl_observation.h"
+
 namespace olympics::client {
 namespace {
 
-// Observation offsets (docs/protocol.md; `olympics-server describe tennis`).
-constexpr int kSelf = 358;
-constexpr int kBodyPos = 1;   // 23 x 3, bodies 1..23 relative to the root, heading frame
-constexpr int kLinVel = 214;  // 24 x 3, heading frame; the root first
-constexpr int kBall = kSelf + 0, kBallVel = kSelf + 3, kTarget = kSelf + 12;
-constexpr int kLeftAnkle = 3, kRightAnkle = 7, kRightShoulder = 20;  // body indices
+using namespace smpl;
 
-// Action indices: 23 joints x (x, y, z) in body order, L_Hip first (joint j = body j + 1).
-constexpr int joint(int body, int axis) { return 3 * (body - 1) + axis; }
-constexpr int kLHip = 1, kRHip = 5, kLAnkle = 3, kRAnkle = 7, kRShoulder = 20, kRElbow = 21,
-              kRHand = 23;
+// Racket task observation offsets (`olympics-server describe tennis`).
+constexpr int kBall = kSelfObservation + 0, kBallVel = kSelfObservation + 3,
+              kTarget = kSelfObservation + 12, kCourtPosition = kSelfObservation + 18,
+              kCourtHeading = kSelfObservation + 20, kComingToMe = kSelfObservation + 23;
+constexpr int kTaskObservation = 26;
+constexpr double kReachEarly_s = 0.5;  // while walking, the arm stays at rest until this close
 
-Eigen::Vector3d vec(std::span<const float> o, int at) { return {o[at], o[at + 1], o[at + 2]}; }
-Eigen::Vector3d body_pos(std::span<const float> o, int body) {
-  return vec(o, kBodyPos + 3 * (body - 1));
+struct SportPlay {
+  double restitution;  // of the court or table, for the prediction
+  double plane;        // hitting plane, m in front of the root
+  double ball_radius;
+  Eigen::Vector2d reach;  // where the racket meets the ball, relative to the root
+  StepGains legs;
+};
+
+// Balance gains were found by a grid search over 12 ball-return episodes each (touches, falls):
+// the racket's weight on the outstretched arm asks for other gains than the paddle's. Step gains
+// by a random search over walks to 10 targets (reach, time, heading, falls).
+SportPlay tennis_play() {
+  SportPlay p{0.75, 0.3, 0.032, {0.3, -1.05}, {}};
+  p.legs.balance = {1.0, 2.0, 0.0, 1.0};
+  return p;
+}
+SportPlay table_play() {
+  SportPlay p{0.9, 0.35, 0.02, {0.35, -0.75}, {}};
+  p.legs.balance = {0.5, 0.5, -0.2, 2.0};
+  return p;
 }
 
-// Balance gains per sport (rad per m, rad per m/s, rad), found by a grid search over 12
-// ball-return episodes each, scoring touches and falls: the racket's weight on the outstretched
-// arm asks for other gains than the paddle's.
-struct BalanceGains {
-  double ankle_p, ankle_d, ankle_bias, hip_p;
+struct Crossing {
+  bool found = false;
+  Eigen::Vector3d point;
+  double seconds = 0;
 };
-constexpr BalanceGains kTennisBalance{1.0, 2.0, 0.0, 1.0};
-constexpr BalanceGains kTableBalance{0.5, 0.5, -0.2, 2.0};
+
+// Steps the ball (gravity, one bounce off the surface) until it crosses x = plane coming in.
+// Works in the root's frame turned to face the net (`facing` turns heading-frame vectors so),
+// which does not sway with the body as the heading frame does.
+Crossing predict_crossing(std::span<const float> o, const SportPlay& play, double surface_z,
+                          const Eigen::Matrix3d& facing) {
+  Eigen::Vector3d p = facing * vec3(o, kBall), v = facing * vec3(o, kBallVel);
+  const double floor_z = surface_z + play.ball_radius;
+  Crossing c;
+  for (int i = 0; i < 240; ++i) {
+    const double dt = 1.0 / 120;
+    v.z() -= 9.81 * dt;
+    const Eigen::Vector3d next = p + v * dt;
+    if (next.z() < floor_z && v.z() < 0) v.z() = -play.restitution * v.z();
+    c.seconds += dt;
+    if ((p.x() - play.plane) * (next.x() - play.plane) <= 0 && v.x() < 0) {
+      c.found = true;
+      c.point = next;
+      return c;
+    }
+    p = next;
+  }
+  return c;
+}
+
+// Points the racket at `aim` (root-relative) from the right shoulder, face to the net; `swing`
+// from 0 (drawn back) to 1 (through).
+void reach(std::span<const float> o, const Eigen::Vector3d& aim, double swing, std::span<float> a) {
+  Eigen::Vector3d d = aim - body_position(o, kRShoulder);
+  if (d.norm() < 1e-6) d = Eigen::Vector3d(0, -1, 0);
+  d.normalize();
+  set_joint(a, kRShoulder, 0, std::atan2(-d.z(), -d.y()));
+  set_joint(a, kRShoulder, 2, std::asin(std::clamp(d.x(), -1.0, 1.0)) - 0.4 * swing);
+  set_joint(a, kRElbow, 0, 0);
+  set_joint(a, kRHand, 1, M_PI / 2);  // roll the face towards the net
+}
 
 }  // namespace
 
 void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
-  if (o.size() < kSelf + 26 || a.size() != 69)
+  if (o.size() < kSelfObservation + kTaskObservation || a.size() != kActions)
     throw std::invalid_argument(
         "the scripted policy plays tennis and table tennis (69 actions, racket observation)");
   std::fill(a.begin(), a.end(), 0.0f);
-  auto set = [&](int body, int axis, double radians) {
-    a[joint(body, axis)] = static_cast<float>(radians / M_PI);
-  };
 
   const double root_height = o[0];
-  const double surface = root_height + o[kTarget + 2];  // the court or table height, root-relative
-  const bool table = surface > 0.3;
+  const double surface_z = o[kTarget + 2];  // the court or table height, root-relative
+  const bool table = root_height + surface_z > 0.3;
+  const SportPlay play = table ? table_play() : tennis_play();
+  if (!legs_ || legs_for_table_ != table) legs_.emplace(play.legs), legs_for_table_ = table;
 
-  // Balance: root over the middle of the ankles.
-  const BalanceGains& g = table ? kTableBalance : kTennisBalance;
-  const Eigen::Vector3d mid = 0.5 * (body_pos(o, kLeftAnkle) + body_pos(o, kRightAnkle));
-  const Eigen::Vector3d v = vec(o, kLinVel);
-  const double dx = -mid.x(), dy = -mid.y();
-  for (int ankle : {kLAnkle, kRAnkle}) {
-    set(ankle, 1, g.ankle_bias + g.ankle_p * dx + g.ankle_d * v.x());
-    set(ankle, 0, -(g.ankle_p * dy + g.ankle_d * v.y()));
-  }
-  for (int hip : {kLHip, kRHip}) set(hip, 1, g.hip_p * dx);
+  // The heading relative to facing the net; `facing` turns heading-frame vectors to the net.
+  const double heading = std::atan2(o[kCourtHeading + 1], o[kCourtHeading]);
+  const Eigen::Matrix3d facing = Eigen::AngleAxisd(heading, Eigen::Vector3d::UnitZ()).matrix();
+  const Crossing crossing = predict_crossing(o, play, surface_z, facing);
+  const bool coming = o[kComingToMe] > 0.5 && crossing.found;
 
-  // Predict where the ball crosses the hitting plane x = plane in front of the root.
-  const double restitution = table ? 0.9 : 0.75;
-  const double plane = table ? 0.35 : 0.3;
-  Eigen::Vector3d p = vec(o, kBall), bv = vec(o, kBallVel);
-  const double floor_z = surface - root_height + (table ? 0.02 : 0.032);
-  double t = 0;
-  bool found = false;
-  for (int i = 0; i < 240 && !found; ++i) {
-    const double dt = 1.0 / 120;
-    bv.z() -= 9.81 * dt;
-    const Eigen::Vector3d next = p + bv * dt;
-    if (next.z() < floor_z && bv.z() < 0) bv.z() = -restitution * bv.z();
-    if ((p.x() - plane) * (next.x() - plane) <= 0 && bv.x() < 0) found = true;
-    p = next;
-    t += dt;
-  }
-  const Eigen::Vector3d shoulder = body_pos(o, kRightShoulder);
-  Eigen::Vector3d aim = found ? p : Eigen::Vector3d(plane, shoulder.y() - 0.6, shoulder.z());
-  // Swing: the racket waits behind the hitting point and comes through as the ball arrives.
-  const double swing = found ? std::clamp(t / 0.4, 0.0, 1.0) : 1.0;
-  Eigen::Vector3d d = aim - shoulder;
-  if (d.norm() < 1e-6) d = Eigen::Vector3d(0, -1, 0);
-  d.normalize();
-  const double qz = std::asin(std::clamp(d.x(), -1.0, 1.0)) - 0.4 * swing;
-  const double qx = std::atan2(-d.z(), -d.y());
-  set(kRShoulder, 0, qx);
-  set(kRShoulder, 2, qz);
-  set(kRElbow, 0, 0);
-  set(kRHand, 1, M_PI / 2);  // roll the face towards the net
+  // Legs: under the crossing point while the ball comes; otherwise back to the middle.
+  Eigen::Vector3d walk_to(0, 0, 0);  // net-facing frame
+  if (coming)
+    walk_to.y() = crossing.point.y() - play.reach.y();
+  else if (const double court_y = o[kCourtPosition + 1]; std::abs(court_y) > 0.5)
+    walk_to.y() = -court_y;
+  legs_->act(o, (facing.transpose() * walk_to).head<2>(), -heading, a);
+
+  const Eigen::Vector3d shoulder = body_position(o, kRShoulder);
+  const Eigen::Vector3d rest(play.plane, shoulder.y() - 0.6, shoulder.z());
+  if (crossing.found && (!legs_->stepping() || crossing.seconds < kReachEarly_s))
+    reach(o, facing.transpose() * crossing.point, std::clamp(crossing.seconds / 0.4, 0.0, 1.0), a);
+  else
+    reach(o, rest, 1.0, a);
 }
 
 }  // namespace olympics::client

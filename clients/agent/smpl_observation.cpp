@@ -1,0 +1,21 @@
+#include "smpl_observation.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+namespace olympics::client::smpl {
+
+Eigen::Matrix3d body_rotation(std::span<const float> o, int body) {
+  const Eigen::Vector3d x = vec3(o, kRotations + 6 * body).normalized();
+  const Eigen::Vector3d z = vec3(o, kRotations + 6 * body + 3).normalized();
+  Eigen::Matrix3d r;
+  r << x, z.cross(x), z;
+  return r;
+}
+
+void set_joint(std::span<float> action, int body, int axis, double radians) {
+  const bool knee_flexion = (body == kLKnee || body == kRKnee) && axis == 1;
+  action[3 * (body - 1) + axis] = static_cast<float>(radians / (knee_flexion ? 5.0 : M_PI));
+}
+
+}  // namespace olympics::client::smpl

@@ -1,0 +1,48 @@
+// Reading the SMPL self observation (358 floats, sports/core/self_observation.h) and writing SMPL
+// actions (69 PD targets): offsets and small helpers shared by the scripted controllers.
+#pragma once
+
+#include <Eigen/Core>
+#include <span>
+
+namespace olympics::client::smpl {
+
+constexpr int kSelfObservation = 358;
+constexpr int kActions = 69;
+constexpr int kBodyPos = 1;     // bodies 1..23 relative to the root, 3 each
+constexpr int kRotations = 70;  // 24 bodies x (x axis, z axis), 6 each
+constexpr int kLinVel = 214;    // 24 x 3; the root first
+constexpr double kControlDt = 1.0 / 30;
+
+// Body indices (HUMANOID.md section 1.1). Joint j moves body j (j >= 1).
+enum Body {
+  kPelvis = 0,
+  kLHip = 1,
+  kLKnee = 2,
+  kLAnkle = 3,
+  kLToe = 4,
+  kRHip = 5,
+  kRKnee = 6,
+  kRAnkle = 7,
+  kRToe = 8,
+  kRShoulder = 20,
+  kRElbow = 21,
+  kRHand = 23,
+};
+
+inline Eigen::Vector3d vec3(std::span<const float> o, int at) {
+  return {o[at], o[at + 1], o[at + 2]};
+}
+inline Eigen::Vector3d body_position(std::span<const float> o, int body) {
+  return body == kPelvis ? Eigen::Vector3d::Zero() : vec3(o, kBodyPos + 3 * (body - 1));
+}
+inline Eigen::Vector3d root_velocity(std::span<const float> o) { return vec3(o, kLinVel); }
+
+// The body's rotation in the heading frame, rebuilt from its x and z axes.
+Eigen::Matrix3d body_rotation(std::span<const float> o, int body);
+
+// Sets joint `body`'s hinge `axis` (0 x, 1 y, 2 z) to `radians`: a = radians / pi, knee flexion
+// a = radians / 5 (HUMANOID.md: PD target = pi a per axis, knee flexion 5 a).
+void set_joint(std::span<float> action, int body, int axis, double radians);
+
+}  // namespace olympics::client::smpl

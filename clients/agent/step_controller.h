@@ -1,0 +1,69 @@
+// A scripted stepping controller for the SMPL humanoid: it walks the root toward a point on the
+// ground, from the self observation alone (358 floats, heading frame of the root).
+//
+// Why this design: actions are PD targets, not torques, so the controller is written as leg
+// inverse kinematics. Each step one leg stands and the other swings, alternately, every
+// `step_s` seconds:
+// - the stance leg is solved in the upright heading frame (not the pelvis's tilted one), so its
+//   stiff hip drive pulls the pelvis and torso upright over the planted foot, and its length
+//   sets the pelvis height;
+// - the swing foot is lifted and placed where the centre of mass will need it (a Raibert-style
+//   rule: half a step of the current velocity ahead, plus a gain on the velocity error against
+//   the desired velocity toward the target), which both balances and moves the body;
+// - both feet are kept flat on the ground by their ankles.
+// Close to the target and slow, it stands with both feet down and an ankle/hip strategy.
+#pragma once
+
+#include <Eigen/Core>
+#include <span>
+
+namespace olympics::client {
+
+// Standing balance: ankle and hip pitch/roll from where the root is over the ankles and how it
+// moves (rad per m, rad per m/s, rad).
+struct BalanceGains {
+  double ankle_p = 1.0, ankle_d = 2.0, ankle_bias = 0.0, hip_p = 1.0;
+};
+
+struct StepGains {
+  BalanceGains balance;
+  double step_s = 0.3;           // duration of one step
+  double max_speed = 1.2;        // m/s toward the target
+  double max_side_speed = 0.55;  // m/s sideways
+  double speed_per_m = 2.4;      // desired speed per metre of distance to the target
+  double lead_s = 0.14;          // foot placed ahead by the velocity times this (half a step)
+  double velocity_gain = 0.13;   // foot placement per m/s of velocity error
+  double stance_width = 0.14;    // swing foot this far to its side of the centre of mass
+  double max_step = 0.5;         // swing foot at most this far from the stance foot, m
+  double lift = 0.14;            // swing foot clearance, m
+  double leg_length = 0.77;      // stance hip-to-ankle distance (a slightly bent knee)
+  double upright_gain = 4.3;     // stance hip correction per radian of pelvis tilt
+  double turn_gain = 3.0;        // stance hip twist per radian of heading error
+  double start_m = 0.3;          // standing, it starts to step when the target is this far
+  double arrive_m = 0.12;        // closer than this and slower than...
+  double settle_speed = 0.25;    // ...this, it stands still
+};
+
+class StepController {
+ public:
+  explicit StepController(const StepGains& gains = {}) : gains_(gains) {}
+
+  // Writes the leg joints (hips, knees, ankles) of `action` to walk toward `target`, a ground
+  // point in the heading frame relative to the root, turning by `turn` radians (left positive)
+  // while stepping. Other joints are left as they are.
+  void act(std::span<const float> observation, const Eigen::Vector2d& target, double turn,
+           std::span<float> action);
+
+  bool stepping() const { return stepping_; }
+
+ private:
+  void stand(std::span<const float> o, std::span<float> a) const;
+
+  StepGains gains_;
+  bool stepping_ = false;
+  bool left_swings_ = true;
+  double phase_s_ = 0;  // time into the current step
+  Eigen::Vector2d lift_off_{0, 0};
+};
+
+}  // namespace olympics::client

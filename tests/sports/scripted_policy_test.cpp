@@ -1,0 +1,100 @@
+// The scripted baseline's legs and its play: it walks where it is sent without falling, and in
+// ball-return episodes it moves toward where the ball will come.
+#include "scripted_policy.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/equipment.h"
+#include "core/humanoid_assets.h"
+#include "core/humanoid_scene.h"
+#include "core/rotation.h"
+#include "core/self_observation.h"
+#include "registry.h"
+#include "step_controller.h"
+
+namespace olympics::client {
+namespace {
+
+struct Walk {
+  double error_m = 0;  // distance to the target at the end
+  double min_root_height = 10;
+};
+
+// A racket-carrying humanoid sent to a fixed ground point (world frame) for `seconds`.
+Walk walk_to(const Eigen::Vector2d& target, double seconds) {
+  core::ModelSpec spec = core::load_humanoid(core::HumanoidKind::Smpl);
+  core::attach_equipment(spec, core::tennis_racket());
+  core::HumanoidScene scene;
+  scene.add_humanoid(spec, {{0, 0, 0}, 0});
+  StepController legs;
+  std::vector<float> obs(358), act(69);
+  Walk w;
+  Eigen::Vector3d root = Eigen::Vector3d::Zero();
+  for (int tick = 0; tick < seconds * 30; ++tick) {
+    const auto bodies = scene.humanoid(0).body_states();
+    core::write_self_observation(bodies, obs);
+    root = bodies[0].position;
+    w.min_root_height = std::min(w.min_root_height, root.z());
+    const Eigen::Vector3d to_target =
+        core::inverse_heading(bodies[0].orientation) *
+        Eigen::Vector3d(target.x() - root.x(), target.y() - root.y(), 0);
+    std::fill(act.begin(), act.end(), 0.0f);
+    legs.act(obs, to_target.head<2>(), -core::heading_angle(bodies[0].orientation), act);
+    scene.set_action(0, act);
+    scene.tick();
+  }
+  w.error_m = (root.head<2>() - target).norm();
+  return w;
+}
+
+TEST(StepController, WalksToPointsAroundItWithoutFalling) {
+  for (const Eigen::Vector2d& target :
+       {Eigen::Vector2d(1, 0), Eigen::Vector2d(-1, 0), Eigen::Vector2d(0, 1),
+        Eigen::Vector2d(0, -1), Eigen::Vector2d(1.5, 1.5)}) {
+    const Walk w = walk_to(target, 5.0);
+    EXPECT_GT(w.min_root_height, 0.6) << "fell walking to " << target.transpose();
+    EXPECT_LT(w.error_m, 0.5) << "walking to " << target.transpose();
+  }
+}
+
+TEST(StepController, StandsStillWhenAlreadyThere) {
+  const Walk w = walk_to({0, 0}, 3.0);
+  EXPECT_GT(w.min_root_height, 0.8);
+  EXPECT_LT(w.error_m, 0.1);
+}
+
+// Ball-return episodes: when the ball will pass far from where the racket meets it, the player
+// has moved toward the side it comes to by the time it arrives.
+TEST(ScriptedRacketPolicy, MovesTowardTheComingBall) {
+  constexpr int kCourtY = 358 + 19, kBallY = 358 + 1, kBallX = 358;
+  int far_balls = 0, moved_toward = 0;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    auto match = sports::sport_or_throw("tennis").create({"ball_return", seed, 30.0, {}});
+    ScriptedRacketPolicy policy;
+    std::vector<float> obs(match->obs_size()), act(69);
+    match->observe(0, obs);
+    const double start_y = obs[kCourtY];
+    while (!match->outcome().match_over) {
+      match->observe(0, obs);
+      if (obs[kBallX] < 0.5) break;  // the ball has reached the player
+      policy.act(obs, act);
+      match->step({std::span<const float>(act)});
+    }
+    if (match->outcome().match_over) continue;
+    // Court y of the ball here, and where the player should stand: the ball 1.05 m to its right.
+    const double ball_court_y = obs[kCourtY] + obs[kBallY];
+    const double wanted = ball_court_y + 1.05 - start_y;
+    if (std::abs(wanted) < 0.6) continue;
+    ++far_balls;
+    const double moved = obs[kCourtY] - start_y;
+    if (moved * wanted > 0 && std::abs(moved) > 0.15) ++moved_toward;
+  }
+  std::printf("far balls %d, moved toward %d\n", far_balls, moved_toward);
+  ASSERT_GE(far_balls, 5);
+  EXPECT_GE(moved_toward, 0.8 * far_balls) << moved_toward << " of " << far_balls;
+}
+
+}  // namespace
+}  // namespace olympics::client
