@@ -90,7 +90,9 @@ void StepController::act(std::span<const float> o, const Eigen::Vector2d& target
 
   // Where the swing foot goes: under where the root will be, half a step on, corrected by the
   // velocity error, to its own side.
-  Eigen::Vector2d desired_v = target.normalized() * std::min(g.max_speed, g.speed_per_m * distance);
+  Eigen::Vector2d desired_v = Eigen::Vector2d::Zero();
+  if (distance > 1e-9)
+    desired_v = target / distance * std::min(g.max_speed, g.speed_per_m * distance);
   // Sideways the feet cannot cross, so only every other step can catch the body: go slower.
   desired_v.y() = std::clamp(desired_v.y(), -g.max_side_speed, g.max_side_speed);
   const double remaining = g.step_s - phase_s_;

@@ -65,6 +65,19 @@ TEST(StepController, StandsStillWhenAlreadyThere) {
   EXPECT_LT(w.error_m, 0.1);
 }
 
+TEST(StepController, TargetReachedMidStepGivesFiniteActions) {
+  core::ModelSpec spec = core::load_humanoid(core::HumanoidKind::Smpl);
+  core::HumanoidScene scene;
+  scene.add_humanoid(spec);
+  std::vector<float> obs(358), act(69, 0.0f);
+  core::write_self_observation(scene.humanoid(0).body_states(), obs);
+  StepController legs;
+  legs.act(obs, {1, 0}, 0, act);
+  ASSERT_TRUE(legs.stepping());
+  legs.act(obs, {0, 0}, 0, act);
+  for (float x : act) EXPECT_TRUE(std::isfinite(x));
+}
+
 // Ball-return episodes: when the ball will pass far from where the racket meets it, the player
 // has moved toward the side it comes to by the time it arrives.
 TEST(ScriptedRacketPolicy, MovesTowardTheComingBall) {
