@@ -61,29 +61,32 @@ void StepController::stand(std::span<const float> o, std::span<float> a) const {
   for (int hip : {kLHip, kRHip}) set_joint(a, hip, 1, g.hip_p * dx);
 }
 
+void StepController::begin_step(std::span<const float> o, bool left_swings) {
+  left_swings_ = left_swings;
+  phase_s_ = 0;
+  lift_off_ = body_position(o, left_swings ? kLAnkle : kRAnkle).head<2>();
+}
+
 void StepController::act(std::span<const float> o, const Eigen::Vector2d& target, double turn,
                          std::span<float> a) {
   const StepGains& g = gains_;
   const Eigen::Vector2d v = root_velocity(o).head<2>();
   const double distance = target.norm();
 
+  const double ground = -o[0];  // the floor, root-relative
   if (!stepping_) {
     if (distance < g.start_m) return stand(o, a);
     stepping_ = true;
-    left_swings_ = target.y() > 0;
-    phase_s_ = 0;
-    lift_off_ = body_position(o, left_swings_ ? kLAnkle : kRAnkle).head<2>();
+    begin_step(o, target.y() > 0);
   } else if (phase_s_ >= g.step_s) {
-    const double ground = -o[0];
-    const bool feet_down = body_position(o, kLAnkle).z() < ground + kAnkleHeight + 0.02 &&
-                           body_position(o, kRAnkle).z() < ground + kAnkleHeight + 0.02;
-    if (feet_down && distance < g.arrive_m && v.norm() < g.settle_speed) {
+    auto down = [&](int ankle) {
+      return body_position(o, ankle).z() < ground + kAnkleHeight + 0.02;
+    };
+    if (down(kLAnkle) && down(kRAnkle) && distance < g.arrive_m && v.norm() < g.settle_speed) {
       stepping_ = false;
       return stand(o, a);
     }
-    left_swings_ = !left_swings_;
-    phase_s_ = 0;
-    lift_off_ = body_position(o, left_swings_ ? kLAnkle : kRAnkle).head<2>();
+    begin_step(o, !left_swings_);
   }
   const int swing_hip = left_swings_ ? kLHip : kRHip, stance_hip = left_swings_ ? kRHip : kLHip;
   const double side = left_swings_ ? 1.0 : -1.0;
@@ -108,7 +111,6 @@ void StepController::act(std::span<const float> o, const Eigen::Vector2d& target
   const double blend = std::clamp(2 * s, 0.0, 1.0);  // the foot gets there by mid-swing
   const Eigen::Vector2d horizontal =
       lift_off_ + (foot - lift_off_) * (blend * blend * (3 - 2 * blend));
-  const double ground = -o[0];  // the floor, root-relative
   const Eigen::Vector3d ankle(horizontal.x(), horizontal.y(),
                               ground + kAnkleHeight + g.lift * std::sin(M_PI * s) - 0.02 * s);
 

@@ -58,6 +58,7 @@ class StepController {
 
  private:
   void stand(std::span<const float> o, std::span<float> a) const;
+  void begin_step(std::span<const float> o, bool left_swings);
 
   StepGains gains_;
   bool stepping_ = false;
