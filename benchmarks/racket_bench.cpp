@@ -4,10 +4,10 @@
 #include <chrono>
 #include <cstdio>
 
-#include "core/equipment.h"
 #include "core/humanoid_assets.h"
 #include "core/humanoid_scene.h"
 #include "policies.h"
+#include "racket/racket_equipment.h"
 #include "racket/racket_match.h"
 #include "registry.h"
 
@@ -77,9 +77,9 @@ double match_ticks_per_s(const std::string& sport, double seconds) {
 }
 
 // Ticks per second of the same two equipped humanoids with nothing else.
-double bare_ticks_per_s(const core::EquipmentSpec& equipment, double seconds) {
+double bare_ticks_per_s(const sports::equipment::EquipmentSpec& equipment, double seconds) {
   core::ModelSpec spec = core::load_humanoid(core::HumanoidKind::Smpl);
-  core::attach_equipment(spec, equipment);
+  sports::equipment::attach_equipment(spec, equipment);
   std::vector<float> act(69, 0.0f);
   long ticks = 0;
   const auto start = Clock::now();
@@ -116,7 +116,8 @@ nlohmann::json run_racket_bench(const RacketBenchOptions& o) {
                                   {"falls", st.falls},
                                   {"touch_fraction", double(st.touched) / st.balls}};
     }
-    const auto equipment = sport == "tennis" ? core::tennis_racket() : core::table_tennis_paddle();
+    const auto equipment =
+        sport == "tennis" ? sports::racket::tennis_racket() : sports::racket::table_tennis_paddle();
     std::vector<double> match, bare, ratio;
     for (int i = 0; i < o.repeats; ++i) {  // interleaved, so drift hits both alike
       match.push_back(match_ticks_per_s(sport, o.seconds));

@@ -15,7 +15,7 @@ struct Flight {
 };
 
 // Flies a drag-affected ball from `from` until it comes down to the landing height.
-Flight fly(const RacketGame& game, const core::BallFlight& model, const Eigen::Vector3d& from,
+Flight fly(const RacketGame& game, const equipment::BallFlight& model, const Eigen::Vector3d& from,
            const Eigen::Vector3d& v0) {
   Eigen::Vector3d p = from, v = v0;
   const double land_z = game.surface_height + game.ball.radius;
@@ -62,7 +62,7 @@ Launch draw_launch(const RacketGame& game, const Eigen::Vector3d& from, int team
 
 std::optional<Launch> aim_ball(const RacketGame& game, const Eigen::Vector3d& from,
                                const Eigen::Vector2d& target, double horizontal_speed) {
-  const core::BallFlight model(game.ball, game.ball.restitution, game.ball.friction);
+  const equipment::BallFlight model(game.ball, game.ball.restitution, game.ball.friction);
   const Eigen::Vector2d offset = target - from.head<2>();
   const double distance = offset.norm();
   const Eigen::Vector2d dir = offset / distance;

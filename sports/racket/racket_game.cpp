@@ -2,10 +2,12 @@
 
 #include <cmath>
 
+#include "racket/racket_equipment.h"
+
 namespace olympics::sports::racket {
 
-std::vector<core::ArenaBox> RacketGame::arena() const {
-  std::vector<core::ArenaBox> boxes;
+std::vector<equipment::ArenaBox> RacketGame::arena() const {
+  std::vector<equipment::ArenaBox> boxes;
   // A net absorbs most of a ball's energy; it is a thin box from the surface to its top.
   boxes.push_back({kNet,
                    {-net_half_thickness, -net_half_span, surface_height},
@@ -30,8 +32,8 @@ bool RacketGame::in_half(int team, double x, double y, bool doubles) const {
 RacketGame tennis_game(double net_height) {
   RacketGame g;
   g.sport = "tennis";
-  g.ball = core::tennis_ball();
-  g.equipment = core::tennis_racket();
+  g.ball = equipment::tennis_ball();
+  g.equipment = tennis_racket();
   g.half_length = 23.77 / 2;
   g.half_width_singles = 8.23 / 2;
   g.half_width_doubles = 10.97 / 2;
@@ -58,8 +60,8 @@ RacketGame table_tennis_game() {
   RacketGame g;
   g.sport = "table_tennis";
   g.on_table = true;
-  g.ball = core::table_tennis_ball();
-  g.equipment = core::table_tennis_paddle();
+  g.ball = equipment::table_tennis_ball();
+  g.equipment = table_tennis_paddle();
   g.half_length = 2.74 / 2;
   g.half_width_singles = g.half_width_doubles = 1.525 / 2;
   g.surface_height = 0.76;

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "core/ball.h"
-#include "core/ball_flight.h"
-#include "core/equipment.h"
+#include "equipment/ball.h"
+#include "equipment/ball_flight.h"
+#include "equipment/equipment.h"
 
 namespace olympics::sports::racket {
 
@@ -20,8 +20,8 @@ enum ArenaSurface { kGround = 0, kNet = 1, kTable = 2 };
 struct RacketGame {
   std::string sport;
   bool on_table = false;  // table tennis: balls must bounce on the table, the floor is out
-  core::BallSpec ball;
-  core::EquipmentSpec equipment;
+  equipment::BallSpec ball;
+  equipment::EquipmentSpec equipment;
   double half_length = 0;                                 // baseline / table end, |x|
   double half_width_singles = 0, half_width_doubles = 0;  // sidelines, |y|
   double surface_height = 0;  // where a ball must bounce: ground 0, table 0.76
@@ -46,7 +46,7 @@ struct RacketGame {
   bool reward_counts_hits = false;  // table tennis: r_ball adds the episode's successful returns
 
   // Static boxes the ball bounces off: the net, and the table top.
-  std::vector<core::ArenaBox> arena() const;
+  std::vector<equipment::ArenaBox> arena() const;
   double half_width(bool doubles) const {
     return doubles ? half_width_doubles : half_width_singles;
   }

@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/equipment.h"
 #include "core/humanoid_assets.h"
-#include "core/landing.h"
 #include "core/rotation.h"
 #include "core/self_observation.h"
 #include "core/state_hash.h"
+#include "equipment/landing.h"
 #include "racket/ball_launcher.h"
+#include "racket/racket_equipment.h"
 #include "racket/racket_rewards.h"
 
 namespace olympics::sports::racket {
@@ -20,15 +20,15 @@ constexpr int kTaskObs = 26;
 constexpr int kPerOther = 3;
 
 // The SMPL humanoid holding this equipment; built once per kind of equipment.
-const core::ModelSpec& equipped_humanoid(const core::EquipmentSpec& equipment) {
+const core::ModelSpec& equipped_humanoid(const equipment::EquipmentSpec& equipment) {
   static const core::ModelSpec racket = [] {
     core::ModelSpec s = core::load_humanoid(core::HumanoidKind::Smpl);
-    core::attach_equipment(s, core::tennis_racket());
+    equipment::attach_equipment(s, tennis_racket());
     return s;
   }();
   static const core::ModelSpec paddle = [] {
     core::ModelSpec s = core::load_humanoid(core::HumanoidKind::Smpl);
-    core::attach_equipment(s, core::table_tennis_paddle());
+    equipment::attach_equipment(s, table_tennis_paddle());
     return s;
   }();
   return equipment.name == "racket" ? racket : paddle;
@@ -107,7 +107,7 @@ RacketMatch::RacketMatch(const RacketMatchConfig& config, const MatchSettings& s
     scene_.add_humanoid(spec, start_placement(i));
     entity_of_slot_.push_back(entity_of(scene_.humanoid(i)));
     falls_.emplace_back(spec, std::vector<std::string>{config_.game.equipment.hand});
-    const core::EquipmentSpec& e = config_.game.equipment;
+    const equipment::EquipmentSpec& e = config_.game.equipment;
     discs_.push_back({i, e.face, {}, {}, e.restitution, e.friction});
   }
   const int first_server = std::uniform_int_distribution<int>(0, 1)(rng_);
@@ -139,8 +139,8 @@ core::RootPlacement RacketMatch::start_placement(int slot) const {
   return {{side * config_.game.player_x, y, 0}, side < 0 ? 0.0 : M_PI};
 }
 
-core::Pose RacketMatch::racket_pose(int slot) const {
-  return core::equipment_face_pose(scene_.humanoid(slot), hand_body_, config_.game.equipment);
+equipment::Pose RacketMatch::racket_pose(int slot) const {
+  return equipment::equipment_face_pose(scene_.humanoid(slot), hand_body_, config_.game.equipment);
 }
 
 Eigen::Vector2d RacketMatch::draw_target(int slot) {
@@ -183,7 +183,7 @@ void RacketMatch::start_point() {
   flight_.set_state(launch.position, launch.velocity);
 }
 
-void RacketMatch::physics_step(std::vector<core::BallContact>& contacts) {
+void RacketMatch::physics_step(std::vector<equipment::BallContact>& contacts) {
   const double h = scene_.settings().physics_dt();
   const int n = slot_count();
   for (int i = 0; i < n; ++i) {
@@ -207,13 +207,13 @@ void RacketMatch::physics_step(std::vector<core::BallContact>& contacts) {
   probe_bodies(from, time_);
 }
 
-void RacketMatch::handle_contact(const core::BallContact& c, double t) {
+void RacketMatch::handle_contact(const equipment::BallContact& c, double t) {
   switch (c.kind) {
-    case core::SurfaceKind::Ground:
+    case equipment::SurfaceKind::Ground:
       return referee_.surface_contact(kGround, c.centre, t);
-    case core::SurfaceKind::Box:
+    case equipment::SurfaceKind::Box:
       return referee_.surface_contact(static_cast<ArenaSurface>(c.id), c.centre, t);
-    case core::SurfaceKind::Disc:
+    case equipment::SurfaceKind::Disc:
       break;
   }
   const int slot = c.id;
@@ -237,14 +237,14 @@ void RacketMatch::probe_bodies(const Eigen::Vector3d& from, double t) {
   const auto it = std::find(entity_of_slot_.begin(), entity_of_slot_.end(), touch->entity);
   if (it == entity_of_slot_.end()) return;
   referee_.body_touch(static_cast<int>(it - entity_of_slot_.begin()), t);
-  flight_.set_state(touch->centre, core::bounce(flight_.velocity(), Eigen::Vector3d::Zero(),
-                                                touch->normal, 0.3, 0.5));
+  flight_.set_state(touch->centre, equipment::bounce(flight_.velocity(), Eigen::Vector3d::Zero(),
+                                                     touch->normal, 0.3, 0.5));
 }
 
 void RacketMatch::step(const std::vector<std::span<const float>>& actions) {
   if (outcome_.match_over) return;
   for (int i = 0; i < slot_count(); ++i) scene_.set_action(i, actions[i]);
-  std::vector<core::BallContact> contacts;
+  std::vector<equipment::BallContact> contacts;
   for (int s = 0; s < scene_.settings().substeps; ++s) physics_step(contacts);
   ++tick_;
   tick_events_ = nlohmann::json::array();
@@ -344,9 +344,9 @@ void RacketMatch::observe(int slot, std::span<float> out) const {
     return to_heading * (p - root.position);
   };
   const RacketGame& g = config_.game;
-  const core::Pose racket = racket_pose(slot);
+  const equipment::Pose racket = racket_pose(slot);
   const Eigen::Vector2d land =
-      core::predict_landing(flight_.position(), flight_.velocity(), g.surface_height);
+      equipment::predict_landing(flight_.position(), flight_.velocity(), g.surface_height);
   size_t k = kSelfObs;
   put(out, k, rel(flight_.position()));
   put(out, k, to_heading * flight_.velocity());

@@ -15,10 +15,10 @@
 #include <memory>
 #include <random>
 
-#include "core/ball_flight.h"
-#include "core/body_probe.h"
 #include "core/fall_detector.h"
 #include "core/humanoid_scene.h"
+#include "equipment/ball_flight.h"
+#include "equipment/body_probe.h"
 #include "racket/racket_game.h"
 #include "racket/rally_referee.h"
 #include "racket/scoreboard.h"
@@ -66,12 +66,12 @@ class RacketMatch : public SportMatch {
  private:
   void start_point();
   void launch_next_ball();
-  void physics_step(std::vector<core::BallContact>& contacts);
-  void handle_contact(const core::BallContact& c, double t);
+  void physics_step(std::vector<equipment::BallContact>& contacts);
+  void handle_contact(const equipment::BallContact& c, double t);
   void probe_bodies(const Eigen::Vector3d& from, double t);
   void settle_point();
   core::RootPlacement start_placement(int slot) const;
-  core::Pose racket_pose(int slot) const;
+  equipment::Pose racket_pose(int slot) const;
   Eigen::Vector2d draw_target(int slot);
 
   RacketMatchConfig config_;
@@ -82,10 +82,10 @@ class RacketMatch : public SportMatch {
   int hand_body_ = -1;
   std::vector<int> entity_of_slot_;
   std::vector<core::FallDetector> falls_;
-  core::BallFlight flight_;
-  core::BodyProbe probe_;
-  std::vector<core::ArenaBox> arena_;
-  std::vector<core::MovingDisc> discs_;  // per slot: its racket face; poses set each step
+  equipment::BallFlight flight_;
+  equipment::BodyProbe probe_;
+  std::vector<equipment::ArenaBox> arena_;
+  std::vector<equipment::MovingDisc> discs_;  // per slot: its racket face; poses set each step
   RallyReferee referee_;
   std::unique_ptr<Scoreboard> scoreboard_;
   std::vector<Eigen::Vector2d> target_;    // per slot: where its next stroke should land

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/landing.h"
+#include "equipment/landing.h"
 
 namespace olympics::sports::racket {
 
@@ -12,7 +12,8 @@ std::array<float, kRewardTerms> racket_reward_terms(const RewardInput& in) {
     t[kRacketTerm] = static_cast<float>(std::exp(-(in.racket - in.ball).squaredNorm()));
     return t;
   }
-  const Eigen::Vector2d land = core::predict_landing(in.ball, in.ball_velocity, in.landing_height);
+  const Eigen::Vector2d land =
+      equipment::predict_landing(in.ball, in.ball_velocity, in.landing_height);
   t[kContactTerm] = 1.0f;
   t[kLandingTerm] = static_cast<float>(std::exp(-(land - in.target).squaredNorm()));
   if (in.counts_hits) t[kHitsTerm] = static_cast<float>(in.hits);

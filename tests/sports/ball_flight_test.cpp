@@ -1,6 +1,6 @@
 // The flown ball: official bounce tests, and no tunnelling through the net, the table or the
 // ground at the sports' top speeds.
-#include "core/ball_flight.h"
+#include "equipment/ball_flight.h"
 
 #include <gtest/gtest.h>
 
@@ -13,10 +13,10 @@ namespace olympics::sports::racket {
 namespace {
 
 // Drops the ball (its bottom at `drop`) and returns the rebound height of its bottom.
-double rebound(const core::BallSpec& spec, double drop) {
-  core::BallFlight ball(spec, spec.restitution, spec.friction);
+double rebound(const equipment::BallSpec& spec, double drop) {
+  equipment::BallFlight ball(spec, spec.restitution, spec.friction);
   ball.set_state({0, 0, drop + spec.radius}, {0, 0, 0});
-  std::vector<core::BallContact> contacts;
+  std::vector<equipment::BallContact> contacts;
   bool bounced = false;
   double top = 0;
   for (int i = 0; i < 120 * 5; ++i) {
@@ -29,10 +29,10 @@ double rebound(const core::BallSpec& spec, double drop) {
 }
 
 TEST(BallFlight, OfficialBounceTestsComeOutInRange) {
-  const double tennis = rebound(core::tennis_ball(), 2.54);
+  const double tennis = rebound(equipment::tennis_ball(), 2.54);
   EXPECT_GE(tennis, 1.35);
   EXPECT_LE(tennis, 1.47);
-  const double table = rebound(core::table_tennis_ball(), 0.305);
+  const double table = rebound(equipment::table_tennis_ball(), 0.305);
   EXPECT_GE(table, 0.24);
   EXPECT_LE(table, 0.26);
 }
@@ -45,10 +45,10 @@ TEST(BallFlight, FastBallsNeverPassThroughNetTableOrGround) {
     std::uniform_real_distribution<double> speed(5, top), y(-0.5, 0.5);
     for (int i = 0; i < 2000; ++i) {
       // Straight at the net's middle from 0.3 m away, low enough to hit it.
-      core::BallFlight ball(game.ball, game.ball.restitution, game.ball.friction);
+      equipment::BallFlight ball(game.ball, game.ball.restitution, game.ball.friction);
       const double z = game.surface_height + 0.5 * (game.net_height - game.surface_height);
       ball.set_state({-0.3, y(rng), z}, {speed(rng), 0, 0});
-      std::vector<core::BallContact> contacts;
+      std::vector<equipment::BallContact> contacts;
       for (int s = 0; s < 60; ++s) ball.step(1.0 / 120, arena, {}, contacts);
       ASSERT_LT(ball.position().x(), 0) << game.sport << " ball went through the net";
       ASSERT_FALSE(contacts.empty());
@@ -56,9 +56,9 @@ TEST(BallFlight, FastBallsNeverPassThroughNetTableOrGround) {
     }
     if (!game.on_table) continue;
     for (int i = 0; i < 2000; ++i) {  // straight down onto the table, up to 30 m/s
-      core::BallFlight ball(game.ball, game.ball.restitution, game.ball.friction);
+      equipment::BallFlight ball(game.ball, game.ball.restitution, game.ball.friction);
       ball.set_state({0.5, 0, 1.0}, {0, 0, -speed(rng)});
-      std::vector<core::BallContact> contacts;
+      std::vector<equipment::BallContact> contacts;
       for (int s = 0; s < 10; ++s) ball.step(1.0 / 120, arena, {}, contacts);
       ASSERT_FALSE(contacts.empty());
       EXPECT_EQ(contacts.front().id, kTable);
@@ -72,9 +72,9 @@ TEST(BallLauncher, AimedBallsLandOnTheirPointAndClearTheNet) {
   for (const RacketGame& game : {tennis_game(1.0), table_tennis_game()}) {
     for (int i = 0; i < 50; ++i) {
       const Launch launch = ball_return_launch(game, 0, rng);
-      core::BallFlight ball(game.ball, game.ball.restitution, game.ball.friction);
+      equipment::BallFlight ball(game.ball, game.ball.restitution, game.ball.friction);
       ball.set_state(launch.position, launch.velocity);
-      std::vector<core::BallContact> contacts;
+      std::vector<equipment::BallContact> contacts;
       const auto arena = game.arena();
       while (contacts.empty()) ball.step(1.0 / 120, arena, {}, contacts);
       const auto& first = contacts.front();

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "core/equipment.h"
 #include "core/humanoid_assets.h"
+#include "racket/racket_equipment.h"
 #include "registry.h"
 
 namespace olympics::sports::racket {
@@ -55,8 +55,8 @@ TEST(RacketSports, BadSettingsAreRefusedWithTheKnownOnes) {
 TEST(RacketSports, EquipmentAddsItsMassToTheHand) {
   core::ModelSpec bare = core::load_humanoid(core::HumanoidKind::Smpl);
   core::ModelSpec racket = bare, paddle = bare;
-  core::attach_equipment(racket, core::tennis_racket());
-  core::attach_equipment(paddle, core::table_tennis_paddle());
+  equipment::attach_equipment(racket, tennis_racket());
+  equipment::attach_equipment(paddle, table_tennis_paddle());
   core::PhysicsWorld world;
   core::Humanoid h0(world, bare), h1(world, racket), h2(world, paddle);
   // Handle 0.14 kg + head 0.42 kg; the paddle (0.08 kg) replaces the 0.16 kg hand box.

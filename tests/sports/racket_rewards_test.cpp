@@ -5,21 +5,21 @@
 
 #include <cmath>
 
-#include "core/landing.h"
+#include "equipment/landing.h"
 
 namespace olympics::sports::racket {
 namespace {
 
 TEST(Landing, Eq6ByHand) {
   // z0 = 2, v0z = 4: T = (4 + sqrt(16 + 2 * 9.81 * 2)) / 9.81 = 1.165378 s.
-  const Eigen::Vector2d land = core::predict_landing({0, 0, 2}, {3, 1, 4}, 0.0);
+  const Eigen::Vector2d land = equipment::predict_landing({0, 0, 2}, {3, 1, 4}, 0.0);
   EXPECT_NEAR(land.x(), 3.496134, 1e-5);
   EXPECT_NEAR(land.y(), 1.165378, 1e-5);
   // Table height 0.76: T = (0 + sqrt(2 * 9.81 * 0.24)) / 9.81 = 0.221198 s.
-  const Eigen::Vector2d table = core::predict_landing({1, 0, 1.0}, {-2, 0, 0}, 0.76);
+  const Eigen::Vector2d table = equipment::predict_landing({1, 0, 1.0}, {-2, 0, 0}, 0.76);
   EXPECT_NEAR(table.x(), 1 - 2 * 0.221198, 1e-5);
   // Below the height and falling: it stays where it is.
-  const Eigen::Vector2d below = core::predict_landing({1, 2, 0.5}, {3, 0, -1}, 0.76);
+  const Eigen::Vector2d below = equipment::predict_landing({1, 2, 0.5}, {3, 0, -1}, 0.76);
   EXPECT_DOUBLE_EQ(below.x(), 1);
 }
 

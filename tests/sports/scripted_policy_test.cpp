@@ -6,11 +6,11 @@
 
 #include <cmath>
 
-#include "core/equipment.h"
 #include "core/humanoid_assets.h"
 #include "core/humanoid_scene.h"
 #include "core/rotation.h"
 #include "core/self_observation.h"
+#include "racket/racket_equipment.h"
 #include "registry.h"
 #include "step_controller.h"
 
@@ -25,7 +25,7 @@ struct Walk {
 // A racket-carrying humanoid sent to a fixed ground point (world frame) for `seconds`.
 Walk walk_to(const Eigen::Vector2d& target, double seconds) {
   core::ModelSpec spec = core::load_humanoid(core::HumanoidKind::Smpl);
-  core::attach_equipment(spec, core::tennis_racket());
+  sports::equipment::attach_equipment(spec, sports::racket::tennis_racket());
   core::HumanoidScene scene;
   scene.add_humanoid(spec, {{0, 0, 0}, 0});
   StepController legs;

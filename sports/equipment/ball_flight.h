@@ -14,10 +14,10 @@
 #include <span>
 #include <vector>
 
-#include "core/ball.h"
-#include "core/swept_ball.h"
+#include "equipment/ball.h"
+#include "equipment/swept_ball.h"
 
-namespace olympics::core {
+namespace olympics::sports::equipment {
 
 // A static axis-aligned box the ball bounces off.
 struct ArenaBox {
@@ -82,4 +82,4 @@ class BallFlight {
 double ball_box_distance(const Eigen::Vector3d& centre, double radius, const ArenaBox& box,
                          Eigen::Vector3d* normal = nullptr);
 
-}  // namespace olympics::core
+}  // namespace olympics::sports::equipment

@@ -14,7 +14,7 @@
 
 #include "core/physics_world.h"
 
-namespace olympics::core {
+namespace olympics::sports::equipment {
 
 struct BallSpec {
   std::string name;
@@ -34,7 +34,7 @@ BallSpec golf_ball();
 
 class Ball {
  public:
-  Ball(PhysicsWorld& world, const BallSpec& spec, const Eigen::Vector3d& position,
+  Ball(core::PhysicsWorld& world, const BallSpec& spec, const Eigen::Vector3d& position,
        const Eigen::Vector3d& velocity = Eigen::Vector3d::Zero());
   // Adds this step's air drag; call before every physics step.
   void prepare_step();
@@ -49,7 +49,7 @@ class Ball {
  private:
   BallSpec spec_;
   dBodyID body_;
-  std::unique_ptr<GeomTag> tag_;
+  std::unique_ptr<core::GeomTag> tag_;
 };
 
-}  // namespace olympics::core
+}  // namespace olympics::sports::equipment

@@ -5,7 +5,7 @@
 
 #include <Eigen/Core>
 
-namespace olympics::core {
+namespace olympics::sports::equipment {
 
 // T = (v0z + sqrt(v0z^2 + 2 g (z0 - h))) / g; landing (x0 + v0x T, y0 + v0y T). When the ball
 // can no longer reach h going down (below it and the root is imaginary), T is the time to the
@@ -13,4 +13,4 @@ namespace olympics::core {
 Eigen::Vector2d predict_landing(const Eigen::Vector3d& p0, const Eigen::Vector3d& v0, double h,
                                 double g = 9.81);
 
-}  // namespace olympics::core
+}  // namespace olympics::sports::equipment

@@ -1,9 +1,9 @@
-#include "core/landing.h"
+#include "equipment/landing.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace olympics::core {
+namespace olympics::sports::equipment {
 
 Eigen::Vector2d predict_landing(const Eigen::Vector3d& p0, const Eigen::Vector3d& v0, double h,
                                 double g) {
@@ -12,4 +12,4 @@ Eigen::Vector2d predict_landing(const Eigen::Vector3d& p0, const Eigen::Vector3d
   return {p0.x() + v0.x() * t, p0.y() + v0.y() * t};
 }
 
-}  // namespace olympics::core
+}  // namespace olympics::sports::equipment

@@ -1,8 +1,8 @@
-#include "core/ball.h"
+#include "equipment/ball.h"
 
 #include <cmath>
 
-namespace olympics::core {
+namespace olympics::sports::equipment {
 
 // Radii and masses from SPORTS.md; fields: name, radius, mass, restitution, drag coefficient,
 // friction. Restitution is calibrated by simulation so that the official drop tests land in the
@@ -16,9 +16,9 @@ BallSpec basketball() { return {"basketball", 0.12, 0.60, 0.88, 0.5, 1.0}; }
 // No official bounce test for golf balls (SPORTS.md): 0.8 is the original's club-head restitution.
 BallSpec golf_ball() { return {"golf", 0.021, 0.046, 0.8, 0.25, 0.5}; }
 
-Ball::Ball(PhysicsWorld& world, const BallSpec& spec, const Eigen::Vector3d& position,
+Ball::Ball(core::PhysicsWorld& world, const BallSpec& spec, const Eigen::Vector3d& position,
            const Eigen::Vector3d& velocity)
-    : spec_(spec), body_(dBodyCreate(world.world())), tag_(std::make_unique<GeomTag>()) {
+    : spec_(spec), body_(dBodyCreate(world.world())), tag_(std::make_unique<core::GeomTag>()) {
   dMass m;
   dMassSetSphereTotal(&m, spec.mass, spec.radius);
   dBodySetMass(body_, &m);
@@ -57,4 +57,4 @@ void Ball::set_state(const Eigen::Vector3d& position, const Eigen::Vector3d& vel
   dBodySetAngularVel(body_, 0, 0, 0);
 }
 
-}  // namespace olympics::core
+}  // namespace olympics::sports::equipment

@@ -1,9 +1,9 @@
-#include "core/swept_ball.h"
+#include "equipment/swept_ball.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace olympics::core {
+namespace olympics::sports::equipment {
 Pose interpolate(const Pose& a, const Pose& b, double t) {
   return {a.position + t * (b.position - a.position), a.orientation.slerp(t, b.orientation)};
 }
@@ -77,4 +77,4 @@ Eigen::Vector3d bounce(const Eigen::Vector3d& ball_velocity,
   return surface_velocity + after;
 }
 
-}  // namespace olympics::core
+}  // namespace olympics::sports::equipment

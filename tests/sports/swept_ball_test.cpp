@@ -2,14 +2,14 @@
 // 70 m/s) and at a swinging paddle (table tennis, up to 30 m/s); every contact that dense
 // sub-stepping finds, the swept test finds too, no later. And the bounce obeys restitution and
 // friction.
-#include "core/swept_ball.h"
+#include "equipment/swept_ball.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <random>
 
-namespace olympics::core {
+namespace olympics::sports::equipment {
 namespace {
 
 constexpr double kDt = 1.0 / 120.0;
@@ -118,4 +118,4 @@ TEST(SweptBall, FindsTheContactTimeOfAHeadOnShot) {
 }
 
 }  // namespace
-}  // namespace olympics::core
+}  // namespace olympics::sports::equipment

@@ -1,10 +1,10 @@
-#include "core/ball_flight.h"
+#include "equipment/ball_flight.h"
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
 
-namespace olympics::core {
+namespace olympics::sports::equipment {
 namespace {
 
 constexpr double kTolerance = 1e-4;  // m: contacts within this distance count
@@ -147,4 +147,4 @@ void BallFlight::step(double dt, std::span<const ArenaBox> boxes, std::span<cons
   if (position_.z() < r) position_.z() = r;  // never below the ground, whatever happened
 }
 
-}  // namespace olympics::core
+}  // namespace olympics::sports::equipment

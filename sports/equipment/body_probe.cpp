@@ -1,9 +1,9 @@
-#include "core/body_probe.h"
+#include "equipment/body_probe.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace olympics::core {
+namespace olympics::sports::equipment {
 
 BodyProbe::BodyProbe(double ball_radius) : radius_(ball_radius) {
   sphere_ = dCreateSphere(nullptr, ball_radius);
@@ -12,7 +12,7 @@ BodyProbe::BodyProbe(double ball_radius) : radius_(ball_radius) {
 BodyProbe::~BodyProbe() { dGeomDestroy(sphere_); }
 
 std::optional<BodyTouch> BodyProbe::first_touch(
-    PhysicsWorld& world, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+    core::PhysicsWorld& world, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
     const std::function<bool(int entity, int body)>& ignore) {
   const Eigen::Vector3d lo = p0.cwiseMin(p1).array() - radius_;
   const Eigen::Vector3d hi = p0.cwiseMax(p1).array() + radius_;
@@ -22,7 +22,7 @@ std::optional<BodyTouch> BodyProbe::first_touch(
   const int n = dSpaceGetNumGeoms(world.space());
   for (int g = 0; g < n; ++g) {
     dGeomID geom = dSpaceGetGeom(world.space(), g);
-    auto* tag = static_cast<GeomTag*>(dGeomGetData(geom));
+    auto* tag = static_cast<core::GeomTag*>(dGeomGetData(geom));
     if (!tag || tag->entity < 0 || ignore(tag->entity, tag->body)) continue;
     dReal box[6];
     dGeomGetAABB(geom, box);
@@ -46,4 +46,4 @@ std::optional<BodyTouch> BodyProbe::first_touch(
   return first;
 }
 
-}  // namespace olympics::core
+}  // namespace olympics::sports::equipment

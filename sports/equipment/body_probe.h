@@ -12,7 +12,7 @@
 
 #include "core/physics_world.h"
 
-namespace olympics::core {
+namespace olympics::sports::equipment {
 
 struct BodyTouch {
   int entity = -1, body = -1;  // from the touched geom's GeomTag
@@ -29,7 +29,7 @@ class BodyProbe {
 
   // The first touch along p0 -> p1 with a geom of an entity (>= 0) that `ignore` does not
   // exclude.
-  std::optional<BodyTouch> first_touch(PhysicsWorld& world, const Eigen::Vector3d& p0,
+  std::optional<BodyTouch> first_touch(core::PhysicsWorld& world, const Eigen::Vector3d& p0,
                                        const Eigen::Vector3d& p1,
                                        const std::function<bool(int entity, int body)>& ignore);
 
@@ -38,4 +38,4 @@ class BodyProbe {
   dGeomID sphere_;
 };
 
-}  // namespace olympics::core
+}  // namespace olympics::sports::equipment

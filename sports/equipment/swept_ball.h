@@ -8,7 +8,7 @@
 #include <Eigen/Geometry>
 #include <optional>
 
-namespace olympics::core {
+namespace olympics::sports::equipment {
 
 struct Disc {
   double radius = 0.15;          // m
@@ -50,4 +50,4 @@ Eigen::Vector3d bounce(const Eigen::Vector3d& ball_velocity,
                        const Eigen::Vector3d& surface_velocity, const Eigen::Vector3d& normal,
                        double restitution, double friction, double max_tangential_loss = 1.0);
 
-}  // namespace olympics::core
+}  // namespace olympics::sports::equipment

@@ -1,12 +1,12 @@
 // The balls reproduce the official bounce tests (SPORTS.md) with drag acting, and drag slows a
 // ball as the quadratic law says.
-#include "core/ball.h"
+#include "equipment/ball.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
 
-namespace olympics::core {
+namespace olympics::sports::equipment {
 namespace {
 
 constexpr double kDt = 1.0 / 120.0;
@@ -14,7 +14,7 @@ constexpr double kDt = 1.0 / 120.0;
 // Drops the ball with its bottom at `drop` metres on a rigid floor; returns the bottom's height at
 // the top of the first rebound.
 double rebound_height(const BallSpec& spec, double drop) {
-  PhysicsWorld world;
+  core::PhysicsWorld world;
   Ball ball(world, spec, {0, 0, drop + spec.radius});
   bool bounced = false;
   double top = 0;
@@ -54,7 +54,7 @@ INSTANTIATE_TEST_SUITE_P(Balls, OfficialBounce,
                                            BounceTest{basketball(), 1.8, 1.2, 1.4}));
 
 TEST(Ball, MassesAndQuadraticDrag) {
-  PhysicsWorld world({.gravity = 0});
+  core::PhysicsWorld world({.gravity = 0});
   Ball ball(world, tennis_ball(), {0, 0, 5}, {30, 0, 0});
   dMass m;
   dBodyGetMass(ball.body(), &m);
@@ -73,4 +73,4 @@ TEST(Ball, MassesAndQuadraticDrag) {
 }
 
 }  // namespace
-}  // namespace olympics::core
+}  // namespace olympics::sports::equipment
