@@ -11,6 +11,7 @@
 #include <ctime>
 #include <nlohmann/json.hpp>
 
+#include "core/control_rate.h"
 #include "match_host.h"
 #include "registry.h"
 #include "replay.h"
@@ -44,8 +45,9 @@ int serve(server::ServerConfig config) {
 int describe(const std::string& sport_name, const std::string& mode_arg) {
   const sports::Sport& sport = sports::sport_or_throw(sport_name);
   std::printf("%s: %s\nmodes:", sport.name().c_str(), sport.summary().c_str());
-  for (const auto& m : sport.modes()) std::printf(" %s", m.c_str());
-  std::printf("\ndefault time limit: %g s; control at 30 Hz\n", sport.default_time_limit_s());
+  for (const auto& m : sport.modes().names()) std::printf(" %s", m.c_str());
+  std::printf("\ndefault time limit: %g s; control at %d Hz\n", sport.default_time_limit_s(),
+              core::kControlHz);
   const auto settings = sport.settings();
   if (!settings.empty()) {
     std::printf("settings (a match request's options, JSON):\n");
@@ -54,11 +56,18 @@ int describe(const std::string& sport_name, const std::string& mode_arg) {
                   s.meaning.c_str());
   }
   std::vector<std::string> modes =
-      mode_arg.empty() ? sport.modes() : std::vector<std::string>{mode_arg};
+      mode_arg.empty() ? sport.modes().names() : std::vector<std::string>{mode_arg};
   for (const auto& mode : modes) {
-    sports::Layout l = sport.layout(mode);
-    std::printf("\nmode %s: observation %d floats, action %d floats\n", mode.c_str(),
-                l.observation_size(), l.action_size());
+    const sports::ModeSpec& spec = sport.modes().at(mode);
+    const sports::Layout l = sport.layout(mode);
+    std::string teams;
+    for (int s = 0; s < spec.slot_count(); ++s) {
+      if (s > 0) teams += ' ';
+      teams += std::to_string(s) + ":" + std::to_string(spec.slot_teams[s]);
+    }
+    std::printf("\nmode %s (%s): slots:teams %s; observation %d floats, action %d floats\n",
+                mode.c_str(), spec.summary.c_str(), teams.c_str(), l.observation_size(),
+                l.action_size());
     int at = 0;
     for (const auto& b : l.observation) {
       std::printf("  obs[%d:%d] %-16s (%s) %s\n", at, at + b.size, b.name.c_str(), b.units.c_str(),
@@ -71,9 +80,11 @@ int describe(const std::string& sport_name, const std::string& mode_arg) {
                   b.meaning.c_str());
       at += b.size;
     }
-    std::printf("  reward terms:");
-    for (const auto& t : l.reward_terms) std::printf(" %s", t.c_str());
-    std::printf("\n");
+    std::printf("  reward = weighted sum of the terms (each sent by name):\n");
+    for (const auto& t : l.rewards)
+      std::printf("    %-12s x %-5g %s\n", t.name.c_str(), t.weight, t.meaning.c_str());
+    std::printf("  referee calls (info.events[].call):\n");
+    for (const auto& c : l.calls) std::printf("    %-12s %s\n", c.name.c_str(), c.meaning.c_str());
   }
   return 0;
 }
@@ -247,7 +258,7 @@ int main(int argc, char** argv) {
       for (const auto& name : sports::sport_names()) {
         const auto& s = sports::sport_or_throw(name);
         std::printf("%-10s %s\n           modes:", name.c_str(), s.summary().c_str());
-        for (const auto& m : s.modes()) std::printf(" %s", m.c_str());
+        for (const auto& m : s.modes().names()) std::printf(" %s", m.c_str());
         std::printf("\n");
       }
       return 0;

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "channels.h"
+#include "core/control_rate.h"
 #include "olympics/error_t.hpp"
 #include "olympics/join_reply_t.hpp"
 #include "olympics/match_start_t.hpp"
@@ -20,7 +21,7 @@ MatchRuntime::Clock::duration seconds(double s) {
   return std::chrono::duration_cast<MatchRuntime::Clock::duration>(Seconds(s));
 }
 
-constexpr double kRealtimePeriod = 1.0 / 30.0;
+constexpr double kRealtimePeriod = core::kControlDt;
 constexpr double kMaxResendGapS = 0.25;
 
 }  // namespace
@@ -253,7 +254,7 @@ void MatchRuntime::on_actions(const olympics::action_batch_t& batch, Clock::time
                  "action for tick " + std::to_string(batch.tick) + " arrived at tick " +
                      std::to_string(tick) + " and was ignored");
   }
-  if (identity_.realtime && batch.tick < tick - 30)
+  if (identity_.realtime && batch.tick < tick - core::kControlHz)
     return error(batch.client_id, "STALE_TICK",
                  "action for tick " + std::to_string(batch.tick) +
                      " is over a second old at tick " + std::to_string(tick) + " and was ignored");

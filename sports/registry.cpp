@@ -3,18 +3,27 @@
 #include <memory>
 #include <stdexcept>
 
-#include "racket/racket_sport.h"
-#include "sandbox/sandbox.h"
-
 namespace olympics::sports {
+
+// The registry: one line per sport, naming the factory its folder defines
+// (std::unique_ptr<Sport> make_<name>() in namespace olympics::sports).
+#define OLYMPICS_SPORTS(X) \
+  X(sandbox)               \
+  X(tennis)                \
+  X(table_tennis)
+
+#define OLYMPICS_DECLARE_SPORT(name) std::unique_ptr<Sport> make_##name();
+OLYMPICS_SPORTS(OLYMPICS_DECLARE_SPORT)
+#undef OLYMPICS_DECLARE_SPORT
+
 namespace {
 
 const std::vector<std::unique_ptr<Sport>>& all_sports() {
   static const auto sports = [] {
     std::vector<std::unique_ptr<Sport>> v;
-    v.push_back(std::make_unique<SandboxSport>());
-    v.push_back(std::make_unique<racket::RacketSport>(/*table_tennis=*/false));
-    v.push_back(std::make_unique<racket::RacketSport>(/*table_tennis=*/true));
+#define OLYMPICS_MAKE_SPORT(name) v.push_back(make_##name());
+    OLYMPICS_SPORTS(OLYMPICS_MAKE_SPORT)
+#undef OLYMPICS_MAKE_SPORT
     return v;
   }();
   return sports;

@@ -1,4 +1,5 @@
-// Every sport the server knows, by name. Adding a sport: its folder plus one line in registry.cpp.
+// Every sport the server knows, by name. Adding a sport: its folder (with a factory
+// make_<name>()) plus one line in registry.cpp. docs/sports-framework.md says how.
 #pragma once
 
 #include <string>

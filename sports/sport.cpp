@@ -1,5 +1,6 @@
 #include "sport.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace olympics::sports {
@@ -13,6 +14,29 @@ void TickOutcome::end(const std::string& why, int winner) {
 
 int forfeit_winner(int team_count, int losing_team) {
   return team_count == 2 && losing_team >= 0 ? 1 - losing_team : -1;
+}
+
+int ModeSpec::team_count() const {
+  int teams = 0;
+  for (int t : slot_teams) teams = std::max(teams, t + 1);
+  return teams;
+}
+
+ModeTable::ModeTable(std::string sport, std::vector<ModeSpec> modes)
+    : sport_(std::move(sport)), modes_(std::move(modes)) {}
+
+const ModeSpec& ModeTable::at(const std::string& mode) const {
+  for (const auto& m : modes_)
+    if (m.name == mode) return m;
+  std::string known;
+  for (const auto& m : modes_) known += (known.empty() ? "" : ", ") + m.name;
+  throw std::invalid_argument(sport_ + " has no mode \"" + mode + "\"; modes: " + known);
+}
+
+std::vector<std::string> ModeTable::names() const {
+  std::vector<std::string> names;
+  for (const auto& m : modes_) names.push_back(m.name);
+  return names;
 }
 
 LayoutBlock smpl_self_observation_block() {
@@ -36,6 +60,12 @@ int Layout::action_size() const {
   int n = 0;
   for (const auto& b : action) n += b.size;
   return n;
+}
+
+std::vector<std::string> Layout::reward_names() const {
+  std::vector<std::string> names;
+  for (const auto& r : rewards) names.push_back(r.name);
+  return names;
 }
 
 nlohmann::json merge_settings(const std::string& sport, const std::vector<SettingSpec>& specs,

@@ -2,6 +2,9 @@
 //
 // A SportMatch owns its world and steps it one control tick at a time; it knows nothing of the
 // network. The server feeds it one action per slot per tick and publishes what it observes.
+// Most sports do not implement SportMatch directly but build on framework/smpl_match.h, which
+// owns what every SMPL match shares (slots and teams, ticks and the time limit, falls, forfeits,
+// the observation layout and the state hash).
 #pragma once
 
 #include <cstdint>
@@ -24,7 +27,7 @@ struct MatchSettings {
 
 // What one tick produced.
 struct TickOutcome {
-  std::vector<float> reward;              // per slot
+  std::vector<float> reward;              // per slot: the weighted sum of its terms
   std::vector<std::vector<float>> terms;  // per slot, per reward term (names: reward_terms())
   std::vector<std::uint8_t> done;         // per slot: its episode has ended
   std::vector<std::uint8_t> truncated;    // per slot: ended by the time limit
@@ -32,7 +35,7 @@ struct TickOutcome {
   std::string reason;                              // why it is over ("time_limit", ...)
   int winner_team = -1;                            // -1: draw / no winner
   std::vector<float> scores;                       // per team
-  nlohmann::json info = nlohmann::json::object();  // referee calls, events
+  nlohmann::json info = nlohmann::json::object();  // referee calls ("events"), score, ...
 
   // The match is over for `why`: every slot is done; `winner` is a team or -1.
   void end(const std::string& why, int winner);
@@ -42,11 +45,51 @@ struct TickOutcome {
 // is to blame (-1), nobody.
 int forfeit_winner(int team_count, int losing_team);
 
-// One named block of an observation or action vector, for `describe`.
+// One mode of a sport: the team of each slot ({0, 0, 1, 1} for 2v2). The protocol carries this
+// mapping to clients and the league, so nobody parses a mode's name.
+struct ModeSpec {
+  std::string name;
+  std::vector<int> slot_teams;
+  std::string summary;
+  int slot_count() const { return static_cast<int>(slot_teams.size()); }
+  int team_count() const;
+};
+
+// A sport's modes.
+class ModeTable {
+ public:
+  ModeTable(std::string sport, std::vector<ModeSpec> modes);
+  // Throws std::invalid_argument naming the sport's modes when `mode` is not one of them.
+  const ModeSpec& at(const std::string& mode) const;
+  std::vector<std::string> names() const;
+  const std::vector<ModeSpec>& all() const { return modes_; }
+
+ private:
+  std::string sport_;
+  std::vector<ModeSpec> modes_;
+};
+
+// One named block of an observation or action vector, for `describe` and for clients, which
+// find what they need by name (the protocol carries names and sizes).
 struct LayoutBlock {
   std::string name;
   int size;
   std::string units;
+  std::string meaning;
+};
+
+// A reward term: reported by name to the client beside the weighted total, so a trainer can
+// re-weight; `weight` is its default weight in the total.
+struct RewardTerm {
+  std::string name;
+  double weight = 1.0;
+  std::string meaning;
+};
+
+// A call the referee can make; every event in a tick's info["events"] names one
+// (framework/referee_events.h has the one shape every event takes).
+struct RefereeCall {
+  std::string name;
   std::string meaning;
 };
 
@@ -55,12 +98,15 @@ inline constexpr int kSmplSelfObservation = 358;
 LayoutBlock smpl_self_observation_block();
 LayoutBlock smpl_action_block();
 
+// Everything a mode of a sport declares about its vectors and calls; sizes derive from it.
 struct Layout {
   std::vector<LayoutBlock> observation;
   std::vector<LayoutBlock> action;
-  std::vector<std::string> reward_terms;
+  std::vector<RewardTerm> rewards;
+  std::vector<RefereeCall> calls;
   int observation_size() const;
   int action_size() const;
+  std::vector<std::string> reward_names() const;
 };
 
 // A sport's settings: each key with its default and what it means, for `describe` and for
@@ -106,9 +152,10 @@ class Sport {
   virtual ~Sport() = default;
   virtual std::string name() const = 0;
   virtual std::string summary() const = 0;
-  virtual std::vector<std::string> modes() const = 0;
+  virtual const ModeTable& modes() const = 0;
   virtual double default_time_limit_s() const = 0;
-  // Throws std::invalid_argument naming the known modes when the mode is unknown.
+  // Throws std::invalid_argument naming the known modes when the mode is unknown, and naming the
+  // setting when an option is unknown or out of range.
   virtual std::unique_ptr<SportMatch> create(const MatchSettings& settings) const = 0;
   virtual Layout layout(const std::string& mode) const = 0;
   virtual std::vector<SettingSpec> settings() const { return {}; }

@@ -106,7 +106,7 @@ Humanoid::Humanoid(PhysicsWorld& world, const ModelSpec& spec, const RootPlaceme
   }
   for (auto [a, b] : spec_.contact_excludes)
     self_collision_allowed_[a * n + b] = self_collision_allowed_[b * n + a] = 0;
-  int entity = world_.add_entity([this](int a, int b) { return may_self_collide(a, b); });
+  entity_ = world_.add_entity([this](int a, int b) { return may_self_collide(a, b); });
 
   ground_touch_.assign(n, 0);
   auto rest = rest_transforms(spec_);
@@ -139,7 +139,8 @@ Humanoid::Humanoid(PhysicsWorld& world, const ModelSpec& spec, const RootPlaceme
     bodies_.push_back(body);
     com_offset_.push_back(com);
 
-    for (const auto& g : b.geoms) {
+    for (size_t k = 0; k < b.geoms.size(); ++k) {
+      const GeomSpec& g = b.geoms[k];
       if (!g.collides) continue;
       dGeomID geom = create_geom(world_.space(), g);
       dGeomSetBody(geom, body);
@@ -148,8 +149,10 @@ Humanoid::Humanoid(PhysicsWorld& world, const ModelSpec& spec, const RootPlaceme
       dQuaternion q = {g.quat.w(), g.quat.x(), g.quat.y(), g.quat.z()};
       dGeomSetOffsetQuaternion(geom, q);
       auto tag = std::make_unique<GeomTag>();
-      tag->entity = entity;
+      tag->entity = entity_;
       tag->body = i;
+      tag->geom = static_cast<int>(k);
+      tag->sensor = g.sensor;
       tag->friction = g.friction;
       tag->ground_touch = &ground_touch_[i];
       dGeomSetData(geom, tag.get());

@@ -39,6 +39,8 @@ class Humanoid {
   Humanoid& operator=(const Humanoid&) = delete;
 
   const ModelSpec& spec() const { return spec_; }
+  // The entity id its geoms carry in their GeomTag (PhysicsWorld::add_entity).
+  int entity() const { return entity_; }
   int body_count() const { return static_cast<int>(spec_.bodies.size()); }
   int dof_count() const { return dof_count_; }
   double total_mass() const { return total_mass_; }
@@ -68,6 +70,7 @@ class Humanoid {
 
   PhysicsWorld& world_;
   ModelSpec spec_;
+  int entity_ = -1;
   int dof_count_ = 0;
   double total_mass_ = 0;
   double standing_root_height_ = 0;

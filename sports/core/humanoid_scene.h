@@ -1,7 +1,7 @@
 // A world with humanoids in it, stepped at the control rate: the physics every sport builds on.
 //
-// One control tick (30 Hz) = `substeps` physics steps of control_dt / substeps each; PD drives are
-// refreshed before every physics step. A scene is stepped by one thread at a time; several
+// One control tick (kControlHz) = `substeps` physics steps of control_dt / substeps each; PD drives
+// are refreshed before every physics step. A scene is stepped by one thread at a time; several
 // scenes may be stepped in parallel threads and each stays bit-for-bit reproducible.
 #pragma once
 
@@ -10,13 +10,14 @@
 #include <vector>
 
 #include "core/action_map.h"
+#include "core/control_rate.h"
 #include "core/humanoid.h"
 #include "core/physics_world.h"
 
 namespace olympics::core {
 
 struct SceneSettings {
-  double control_dt = 1.0 / 30.0;
+  double control_dt = kControlDt;
   int substeps = 4;  // physics at 120 Hz: chosen by measurement, see docs/physics.md
   WorldSettings world;
   double physics_dt() const { return control_dt / substeps; }

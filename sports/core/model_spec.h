@@ -27,6 +27,7 @@ struct GeomSpec {
   std::optional<double> mass;  // overrides density when given
   double friction = 1.0;
   bool collides = true;  // false: mass only, no ODE geom (e.g. a racket face, see equipment.h)
+  bool sensor = false;   // its contacts are reported with their forces (a sword tip, a glove)
 };
 
 struct HingeSpec {

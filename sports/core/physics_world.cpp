@@ -47,9 +47,33 @@ void PhysicsWorld::step(double dt) {
   ensure_ode_ready_for_this_thread();
   last_contact_count_ = 0;
   last_inter_entity_contacts_ = 0;
+  feedback_.clear();
+  feedback_normals_.clear();
+  pending_.clear();
   dSpaceCollide(space_, this, &PhysicsWorld::near_callback);
   dWorldQuickStep(world_, dt);
+  measure_sensed_forces();
   dJointGroupEmpty(contacts_);
+}
+
+// ODE's contact normal points from the second geom towards the first; the joint's feedback holds
+// the force on its first attached body, whose component along the normal is the contact's normal
+// force (its sign depends on which body ODE attached first, so the magnitude is taken).
+void PhysicsWorld::measure_sensed_forces() {
+  sensed_.clear();
+  for (auto& p : pending_) {
+    SensedContact c = p.contact;
+    c.normal_force = 0;
+    Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+    for (int i = 0; i < p.count; ++i) {
+      const dJointFeedback& fb = feedback_[p.first_feedback + i];
+      const Eigen::Vector3d& n = feedback_normals_[p.first_feedback + i];
+      c.normal_force += std::abs(Eigen::Vector3d(fb.f1[0], fb.f1[1], fb.f1[2]).dot(n));
+      normal += n;
+    }
+    c.normal = (p.sensor_is_first ? 1.0 : -1.0) * normal.normalized();
+    sensed_.push_back(c);
+  }
 }
 
 void PhysicsWorld::near_callback(void* self, dGeomID a, dGeomID b) {
@@ -91,10 +115,30 @@ void PhysicsWorld::collide_pair(dGeomID a, dGeomID b) {
     contact.surface.bounce = restitution;
     contact.surface.bounce_vel = 0.2;  // PhysX's bounce threshold
   }
+  const bool sensed = (tag_a && tag_a->sensor) || (tag_b && tag_b->sensor);
+  const size_t first_feedback = feedback_.size();
   for (int i = 0; i < n; ++i) {
     contact.geom = found[i];
     dJointID j = dJointCreateContact(world_, contacts_, &contact);
     dJointAttach(j, body_a, body_b);
+    if (sensed) {
+      dJointSetFeedback(j, &feedback_.emplace_back());
+      feedback_normals_.emplace_back(found[i].normal[0], found[i].normal[1], found[i].normal[2]);
+    }
+  }
+  if (sensed) {
+    SensedContact c;
+    // where the pair touched: the mean of its points
+    for (int i = 0; i < n; ++i)
+      c.position += Eigen::Vector3d(found[i].pos[0], found[i].pos[1], found[i].pos[2]) / n;
+    if (tag_a && tag_a->sensor) {
+      c.sensor = tag_a, c.other = b_ground ? nullptr : tag_b;
+      pending_.push_back({c, true, first_feedback, n});
+    }
+    if (tag_b && tag_b->sensor) {
+      c.sensor = tag_b, c.other = a_ground ? nullptr : tag_a;
+      pending_.push_back({c, false, first_feedback, n});
+    }
   }
   last_contact_count_ += n;
   if (tag_a && tag_b && tag_a->entity >= 0 && tag_b->entity >= 0 && tag_a->entity != tag_b->entity)

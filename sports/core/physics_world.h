@@ -2,12 +2,16 @@
 //
 // Geoms carry a GeomTag that says which entity (a humanoid, a ball, the arena) and which body
 // they belong to; the world asks each entity's ContactFilter whether two of its own bodies may
-// touch, and records which bodies touched the ground during the last step.
+// touch, and records which bodies touched the ground during the last step. Contacts of sensor
+// geoms (a sword's tip, a glove) are reported after each step with the normal force the solver
+// applied to that very contact (ODE joint feedback), not a body's total force.
 #pragma once
 
 #include <ode/ode.h>
 
+#include <Eigen/Core>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <vector>
 
@@ -29,12 +33,23 @@ struct WorldSettings {
 
 // Per-geom identity, stored as the geom's user data.
 struct GeomTag {
-  int entity = -1;  // -1: static arena
-  int body = -1;    // body index inside the entity
+  int entity = -1;      // -1: static arena
+  int body = -1;        // body index inside the entity
+  int geom = -1;        // index of the geom in its body's list (GeomSpec order)
+  bool sensor = false;  // report this geom's contacts with their forces (sensed_contacts())
   double friction = 1.0;
   double restitution = 0.0;
   // Set by PhysicsWorld::step when this geom touched the ground plane during the step.
   std::uint8_t* ground_touch = nullptr;
+};
+
+// A contact of a sensor geom with another geom during the last step.
+struct SensedContact {
+  const GeomTag* sensor = nullptr;
+  const GeomTag* other = nullptr;  // nullptr: the ground plane or an untagged static geom
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // mean of the pair's contact points
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();    // unit, from the other geom to the sensor
+  double normal_force = 0;                             // N, summed over the pair's contact points
 };
 
 class PhysicsWorld {
@@ -57,10 +72,23 @@ class PhysicsWorld {
   int last_contact_count() const { return last_contact_count_; }
   // Contacts between two different entities (e.g. two humanoids) in the last step.
   int last_inter_entity_contact_count() const { return last_inter_entity_contacts_; }
+  // Every contact pair of a sensor geom in the last step (a pair of two sensors: once from each).
+  const std::vector<SensedContact>& sensed_contacts() const { return sensed_; }
 
  private:
   static void near_callback(void* self, dGeomID a, dGeomID b);
   void collide_pair(dGeomID a, dGeomID b);
+  void sense(const GeomTag* sensor, const GeomTag* other, bool sensor_is_first,
+             const dContactGeom* points, int count);
+  void measure_sensed_forces();
+
+  // A sensed pair waiting for the solver: its contacts' feedback slots.
+  struct PendingSense {
+    SensedContact contact;
+    bool sensor_is_first;  // the sensor is the contact's first geom (the normal points to it)
+    size_t first_feedback;
+    int count;
+  };
 
   WorldSettings settings_;
   dWorldID world_ = nullptr;
@@ -71,6 +99,10 @@ class PhysicsWorld {
   std::vector<SelfCollisionFilter> entity_filters_;
   int last_contact_count_ = 0;
   int last_inter_entity_contacts_ = 0;
+  std::deque<dJointFeedback> feedback_;  // deque: ODE keeps pointers to its elements
+  std::vector<Eigen::Vector3d> feedback_normals_;
+  std::vector<PendingSense> pending_;
+  std::vector<SensedContact> sensed_;
 };
 
 }  // namespace olympics::core

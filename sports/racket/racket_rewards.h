@@ -15,7 +15,7 @@
 namespace olympics::sports::racket {
 
 inline constexpr int kRewardTerms = 4;
-enum RewardTerm { kRacketTerm = 0, kContactTerm = 1, kLandingTerm = 2, kHitsTerm = 3 };
+enum RacketRewardTerm { kRacketTerm = 0, kContactTerm = 1, kLandingTerm = 2, kHitsTerm = 3 };
 
 struct RewardInput {
   Eigen::Vector3d racket;  // centre of the racket face

@@ -5,12 +5,9 @@
 namespace olympics::sports::racket {
 namespace {
 
-RacketMode mode_or_throw(const std::string& sport, const std::string& mode) {
+RacketMode racket_mode(const std::string& mode) {
   if (mode == "ball_return") return RacketMode::BallReturn;
-  if (mode == "1v1") return RacketMode::Singles;
-  if (mode == "2v2") return RacketMode::Doubles;
-  throw std::invalid_argument(sport + " has no mode \"" + mode +
-                              "\"; modes: ball_return, 1v1, 2v2");
+  return mode == "1v1" ? RacketMode::Singles : RacketMode::Doubles;
 }
 
 int positive(const nlohmann::json& s, const char* key, int most) {
@@ -22,6 +19,12 @@ int positive(const nlohmann::json& s, const char* key, int most) {
 }
 
 }  // namespace
+
+RacketSport::RacketSport(bool table_tennis)
+    : table_tennis_(table_tennis),
+      modes_(name(), {{"ball_return", {0}, "one player returns balls launched from the far side"},
+                      {"1v1", {0, 1}, "singles"},
+                      {"2v2", {0, 0, 1, 1}, "doubles"}}) {}
 
 std::string RacketSport::summary() const {
   return table_tennis_ ? "paddle, table, ball with drag; games to 11, win by 2"
@@ -45,7 +48,7 @@ RacketMatchConfig RacketSport::config(const std::string& mode,
                                       const nlohmann::json& options) const {
   const nlohmann::json s = merge_settings(name(), settings(), options);
   RacketMatchConfig c;
-  c.mode = mode_or_throw(name(), mode);
+  c.mode = racket_mode(modes_.at(mode).name);
   c.max_rally_s = s.at("max_rally_s").get<double>();
   if (!(c.max_rally_s >= 1 && c.max_rally_s <= 60))
     throw std::invalid_argument("setting \"max_rally_s\" must be 1..60 seconds");
@@ -73,18 +76,27 @@ RacketMatchConfig RacketSport::config(const std::string& mode,
 std::unique_ptr<SportMatch> RacketSport::create(const MatchSettings& settings) const {
   MatchSettings s = settings;
   if (s.time_limit_s <= 0) s.time_limit_s = default_time_limit_s();
-  return std::make_unique<RacketMatch>(config(s.mode, s.options), s);
+  return std::make_unique<RacketMatch>(config(s.mode, s.options), modes_.at(s.mode), layout(s.mode),
+                                       s);
 }
 
 Layout RacketSport::layout(const std::string& mode) const {
-  const RacketMatchConfig c = config(mode, nlohmann::json::object());
-  const int slots = static_cast<int>(racket_mode_teams(c.mode).size());
   Layout l;
   l.observation = {smpl_self_observation_block()};
-  for (auto& b : racket_task_layout(slots)) l.observation.push_back(b);
+  for (auto& b : racket_task_layout(modes_.at(mode).slot_count())) l.observation.push_back(b);
   l.action = {smpl_action_block()};
-  l.reward_terms = racket_reward_names();
+  l.rewards = racket_rewards();
+  l.calls = racket_calls();
   return l;
 }
 
 }  // namespace olympics::sports::racket
+
+namespace olympics::sports {
+std::unique_ptr<Sport> make_tennis() {
+  return std::make_unique<racket::RacketSport>(/*table_tennis=*/false);
+}
+std::unique_ptr<Sport> make_table_tennis() {
+  return std::make_unique<racket::RacketSport>(/*table_tennis=*/true);
+}
+}  // namespace olympics::sports

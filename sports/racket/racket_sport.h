@@ -9,10 +9,10 @@ namespace olympics::sports::racket {
 
 class RacketSport : public Sport {
  public:
-  explicit RacketSport(bool table_tennis) : table_tennis_(table_tennis) {}
+  explicit RacketSport(bool table_tennis);
   std::string name() const override { return table_tennis_ ? "table_tennis" : "tennis"; }
   std::string summary() const override;
-  std::vector<std::string> modes() const override { return {"ball_return", "1v1", "2v2"}; }
+  const ModeTable& modes() const override { return modes_; }
   double default_time_limit_s() const override { return table_tennis_ ? 600 : 1800; }
   std::unique_ptr<SportMatch> create(const MatchSettings& settings) const override;
   Layout layout(const std::string& mode) const override;
@@ -23,6 +23,7 @@ class RacketSport : public Sport {
 
  private:
   bool table_tennis_;
+  ModeTable modes_;
 };
 
 }  // namespace olympics::sports::racket

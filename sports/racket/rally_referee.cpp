@@ -20,7 +20,7 @@ void RallyReferee::start_point(int receiving_team, int first_hitter, double time
   netted_ = false;
   next_hitter_.assign(2, -1);
   if (alternate_) next_hitter_[receiving_team] = first_hitter;
-  point_start_ = time;
+  stall_.restart(time);
   run_surface_ = -1;
   run_last_ = -1;
   call_.reset();
@@ -46,6 +46,7 @@ void RallyReferee::racket_hit(int slot, double time) {
   const int team = teams_[slot];
   if (slot == last_hitter_ && time - last_hit_time_ < kSameStrokeS) {
     last_hit_time_ = time;  // the ball still on the strings: one stroke
+    stall_.restart(time);
     return;
   }
   event("hit", time, slot);
@@ -60,6 +61,7 @@ void RallyReferee::racket_hit(int slot, double time) {
   striker_ = team;
   last_hitter_ = slot;
   last_hit_time_ = time;
+  stall_.restart(time);
   bounces_ = 0;
   netted_ = false;
   run_surface_ = -1;
@@ -112,7 +114,8 @@ void RallyReferee::body_touch(int slot, double time) {
 }
 
 void RallyReferee::check_stall(double time, double max_rally_s) {
-  if (call_ || time - std::max(point_start_, last_hit_time_) < max_rally_s) return;
+  stall_.set_limit(max_rally_s);
+  if (call_ || !stall_.expired(time)) return;
   lose(1 - striker_, -1, "stalled");
 }
 

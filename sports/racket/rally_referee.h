@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "framework/stall_timer.h"
 #include "racket/racket_game.h"
 
 namespace olympics::sports::racket {
@@ -78,7 +79,7 @@ class RallyReferee {
   int bounces_ = 0;
   bool netted_ = false;
   std::vector<int> next_hitter_;  // per team, when partners alternate (-1: either)
-  double point_start_ = 0;
+  StallTimer stall_;              // since the point began or the last stroke
   // The current run of contacts with one surface (rolling / resting).
   int run_surface_ = -1;
   double run_start_ = 0, run_last_ = -1;

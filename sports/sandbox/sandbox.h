@@ -12,55 +12,37 @@
 // humanoid's heading frame, and 1 if it has fallen.
 #pragma once
 
-#include <random>
-
-#include "core/fall_detector.h"
-#include "core/humanoid_scene.h"
+#include "framework/smpl_match.h"
 #include "sport.h"
 
 namespace olympics::sports {
 
 class SandboxSport : public Sport {
  public:
+  SandboxSport();
   std::string name() const override { return "sandbox"; }
   std::string summary() const override {
     return "flat ground, 1-4 humanoids; stay standing longest (fall detection, time limit)";
   }
-  std::vector<std::string> modes() const override;
+  const ModeTable& modes() const override { return modes_; }
   double default_time_limit_s() const override { return 20.0; }
   std::unique_ptr<SportMatch> create(const MatchSettings& settings) const override;
   Layout layout(const std::string& mode) const override;
-};
-
-class SandboxMatch : public SportMatch {
- public:
-  SandboxMatch(std::vector<int> slot_teams, const MatchSettings& settings);
-
-  int slot_count() const override { return static_cast<int>(teams_.size()); }
-  int team_count() const override { return team_count_; }
-  int team_of(int slot) const override { return teams_[slot]; }
-  int obs_size() const override;
-  int action_size() const override { return 69; }
-  const std::vector<std::string>& reward_terms() const override { return terms_; }
-  void observe(int slot, std::span<float> out) const override;
-  void step(const std::vector<std::span<const float>>& actions) override;
-  const TickOutcome& outcome() const override { return outcome_; }
-  int tick() const override { return tick_; }
-  void forfeit(int losing_team, const std::string& reason) override;
-  std::uint64_t state_hash() const override;
 
  private:
-  void decide_end();
+  ModeTable modes_;
+};
 
-  std::vector<int> teams_;
-  int team_count_ = 0;
-  int time_limit_ticks_;
-  core::HumanoidScene scene_;
-  std::vector<core::FallDetector> falls_;
+class SandboxMatch : public SmplMatch {
+ public:
+  SandboxMatch(const ModeSpec& mode, Layout layout, const MatchSettings& settings);
+
+ private:
+  void write_task_observation(int slot, const HeadingFrame& frame,
+                              ObservationWriter& out) const override;
+  void settle_tick() override;
+
   std::vector<std::uint8_t> fallen_;
-  std::vector<std::string> terms_{"alive", "fall"};
-  TickOutcome outcome_;
-  int tick_ = 0;
 };
 
 }  // namespace olympics::sports

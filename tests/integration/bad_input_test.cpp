@@ -185,7 +185,7 @@ TEST(BadInput, UnknownSportListsTheKnownOnes) {
     ADD_FAILURE() << "an unknown mode was accepted";
   } catch (const client::MatchError& e) {
     EXPECT_EQ(e.code(), "BAD_REQUEST");
-    EXPECT_NE(std::string(e.what()).find("modes: 1v1, 2v2"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("modes: solo, 1v1, 2v2"), std::string::npos) << e.what();
   }
 }
 

@@ -31,7 +31,7 @@ std::uint64_t play(SportMatch& m, int ticks, float a, float slot1 = NAN) {
 TEST(RacketSports, RegisteredWithModesAndSettings) {
   for (const char* name : {"tennis", "table_tennis"}) {
     const Sport& s = sport_or_throw(name);
-    EXPECT_EQ(s.modes(), (std::vector<std::string>{"ball_return", "1v1", "2v2"}));
+    EXPECT_EQ(s.modes().names(), (std::vector<std::string>{"ball_return", "1v1", "2v2"}));
     EXPECT_EQ(make(name, "ball_return", 1)->slot_count(), 1);
     EXPECT_EQ(make(name, "2v2", 1)->slot_count(), 4);
     EXPECT_EQ(s.layout("1v1").observation_size(), make(name, "1v1", 1)->obs_size());

@@ -1,0 +1,11 @@
+// The control rate: policies act, and matches tick, 30 times a second (HUMANOID.md section 2:
+// the original runs its policies at 30 Hz). The one place this number is written; the protocol
+// tells clients (match_created_t.control_hz).
+#pragma once
+
+namespace olympics::core {
+
+inline constexpr int kControlHz = 30;
+inline constexpr double kControlDt = 1.0 / kControlHz;
+
+}  // namespace olympics::core

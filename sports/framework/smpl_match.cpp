@@ -1,0 +1,122 @@
+#include "framework/smpl_match.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/self_observation.h"
+#include "core/state_hash.h"
+
+namespace olympics::sports {
+
+SmplMatch::SmplMatch(const ModeSpec& mode, Layout layout, const MatchSettings& settings,
+                     const core::SceneSettings& scene)
+    : mode_(mode),
+      layout_(std::move(layout)),
+      reward_names_(layout_.reward_names()),
+      scene_(scene),
+      time_limit_ticks_(static_cast<int>(std::lround(settings.time_limit_s / scene.control_dt))) {
+  if (layout_.observation.empty() || layout_.observation.front().name != "self")
+    throw std::logic_error("an SMPL match's observation begins with the self block");
+  for (const auto& r : layout_.rewards) reward_weights_.push_back(static_cast<float>(r.weight));
+  const int n = mode_.slot_count();
+  outcome_.reward.assign(n, 0.0f);
+  outcome_.terms.assign(n, std::vector<float>(reward_names_.size(), 0.0f));
+  outcome_.done.assign(n, 0);
+  outcome_.truncated.assign(n, 0);
+  outcome_.scores.assign(mode_.team_count(), 0.0f);
+  down_.assign(n, 0);
+}
+
+void SmplMatch::add_player(const core::ModelSpec& spec, const core::RootPlacement& placement,
+                           const std::vector<std::string>& fall_exempt) {
+  if (scene_.humanoid_count() >= slot_count())
+    throw std::logic_error("more players than the mode has slots");
+  scene_.add_humanoid(spec, placement);
+  falls_.emplace_back(spec, fall_exempt);
+}
+
+void SmplMatch::reset_player(int slot, const core::RootPlacement& placement) {
+  scene_.humanoid(slot).reset(placement);
+  falls_[slot].reset();
+  down_[slot] = 0;
+}
+
+void SmplMatch::observe(int slot, std::span<float> out) const {
+  ObservationWriter writer(layout_.observation, out);
+  const auto bodies = scene_.humanoid(slot).body_states();
+  core::write_self_observation(bodies, writer.begin("self").whole_block());
+  write_task_observation(slot, HeadingFrame(bodies[0]), writer);
+  writer.finish();
+}
+
+void SmplMatch::step(const std::vector<std::span<const float>>& actions) {
+  if (outcome_.match_over) return;
+  if (scene_.humanoid_count() != slot_count())
+    throw std::logic_error("a match stepped before every slot has its player");
+  for (int i = 0; i < slot_count(); ++i) scene_.set_action(i, actions[i]);
+  const double h = scene_.settings().physics_dt();
+  for (int s = 0; s < scene_.settings().substeps; ++s) {
+    before_physics_step();
+    scene_.physics_step();
+    const double step_start = time_;
+    time_ += h;
+    after_physics_step(step_start);
+  }
+  ++tick_;
+  events_.begin_tick(tick_);
+  outcome_.info = nlohmann::json::object();
+
+  fell_.clear();
+  for (int i = 0; i < slot_count(); ++i) {
+    const bool was_down = down_[i] != 0;
+    down_[i] = falls_[i].fallen(scene_.humanoid(i)) ? 1 : 0;
+    if (down_[i] && !was_down) {
+      fell_.push_back(i);
+      nlohmann::json e = referee_event("fall", time_, i);
+      e["body"] = falls_[i].culprit();
+      log(std::move(e));
+    }
+  }
+  settle_tick();
+  if (!outcome_.match_over && time_up()) on_time_limit();
+  outcome_.info["events"] = events_.events();
+}
+
+void SmplMatch::set_reward(int slot, std::span<const float> terms) {
+  if (terms.size() != reward_weights_.size())
+    throw std::logic_error("reward terms: " + std::to_string(terms.size()) + " for a layout of " +
+                           std::to_string(reward_weights_.size()));
+  outcome_.terms[slot].assign(terms.begin(), terms.end());
+  float total = 0.0f;
+  for (size_t k = 0; k < terms.size(); ++k) total += reward_weights_[k] * terms[k];
+  outcome_.reward[slot] = total;
+}
+
+int SmplMatch::leading_team() const {
+  if (team_count() < 2) return -1;
+  const auto& s = outcome_.scores;
+  const auto best = std::max_element(s.begin(), s.end());
+  return std::count(s.begin(), s.end(), *best) > 1 ? -1 : static_cast<int>(best - s.begin());
+}
+
+void SmplMatch::end_by_time_limit(int winner_team) {
+  for (int i = 0; i < slot_count(); ++i)
+    if (!outcome_.done[i]) outcome_.truncated[i] = 1;
+  outcome_.end("time_limit", winner_team);
+}
+
+void SmplMatch::on_time_limit() { end_by_time_limit(leading_team()); }
+
+void SmplMatch::forfeit(int losing_team, const std::string& reason) {
+  if (outcome_.match_over) return;
+  outcome_.end(reason, forfeit_winner(team_count(), losing_team));
+}
+
+std::uint64_t SmplMatch::state_hash() const {
+  std::vector<double> extra;
+  extra_state(extra);
+  return core::state_hash(scene_, extra);
+}
+
+}  // namespace olympics::sports
