@@ -10,6 +10,7 @@
 #include <random>
 #include <thread>
 
+#include "bench_support.h"
 #include "core/humanoid_assets.h"
 #include "core/humanoid_scene.h"
 #include "mujoco_scene.h"
@@ -108,11 +109,6 @@ double mujoco(const core::ModelSpec& spec, int humanoids, double seconds, const 
   });
   diverged = diverged || !scene.finite();
   return rate;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
 }
 
 // Heap bytes in use (glibc), to count what a world allocates.

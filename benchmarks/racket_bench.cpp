@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "bench_support.h"
 #include "core/humanoid_assets.h"
 #include "core/humanoid_scene.h"
 #include "policies.h"
@@ -29,6 +30,7 @@ EpisodeStats ball_return(const std::string& sport, const std::string& policy_nam
     auto match = s.create({"ball_return", static_cast<std::uint64_t>(e + 1), 60.0, {}});
     auto* racket = dynamic_cast<sports::racket::RacketMatch*>(match.get());
     auto policy = client::make_policy(policy_name, e + 1);
+    policy->start(in_process_match_info(sport, "ball_return", *match));
     std::vector<float> obs(match->obs_size()), act(match->action_size());
     int touches_this_ball = 0, balls = 1, touched = 0;
     bool first_touched = false;
@@ -93,11 +95,6 @@ double bare_ticks_per_s(const sports::equipment::EquipmentSpec& equipment, doubl
     }
   }
   return ticks / std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
 }
 
 }  // namespace

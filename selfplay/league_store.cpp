@@ -13,7 +13,7 @@ constexpr const char* kSchema = R"sql(
 CREATE TABLE IF NOT EXISTS tournaments (
   name TEXT PRIMARY KEY, format TEXT NOT NULL, sport TEXT NOT NULL, mode TEXT NOT NULL,
   seed BIGINT NOT NULL, time_limit_s DOUBLE PRECISION NOT NULL, entrants TEXT NOT NULL,
-  options TEXT NOT NULL);
+  options TEXT NOT NULL, sport_options TEXT NOT NULL DEFAULT '{}');
 CREATE TABLE IF NOT EXISTS games (
   tournament TEXT NOT NULL REFERENCES tournaments(name), idx INTEGER NOT NULL,
   round INTEGER NOT NULL, home INTEGER NOT NULL, away INTEGER NOT NULL, status INTEGER NOT NULL,
@@ -21,6 +21,8 @@ CREATE TABLE IF NOT EXISTS games (
   match_id TEXT NOT NULL, home_score DOUBLE PRECISION NOT NULL, reason TEXT NOT NULL,
   ticks INTEGER NOT NULL, PRIMARY KEY (tournament, idx));
 )sql";
+// Added since the first schema, for league databases made before.
+constexpr const char* kSportOptionsColumn = "TEXT NOT NULL DEFAULT '{}'";
 
 std::string entrants_json(const TournamentSpec& t) {
   nlohmann::json entrants = nlohmann::json::array();
@@ -35,14 +37,15 @@ std::string entrants_json(const TournamentSpec& t) {
 LeagueStore::LeagueStore(const std::string& location)
     : db_(sql::open_sql_database(location, sql::Durability::PowerLoss)) {
   db_->script(kSchema);
+  sql::add_column_if_missing(*db_, "tournaments", "sport_options", kSportOptionsColumn);
 }
 
 LeagueStore::~LeagueStore() = default;
 
 std::optional<TournamentSpec> LeagueStore::find_tournament(const std::string& name) {
   auto rows = db_->query(
-      "SELECT format, sport, mode, seed, time_limit_s, entrants, options FROM tournaments WHERE "
-      "name = $1",
+      "SELECT format, sport, mode, seed, time_limit_s, entrants, options, sport_options FROM "
+      "tournaments WHERE name = $1",
       {name});
   if (rows.empty()) return std::nullopt;
   const auto& r = rows[0];
@@ -54,6 +57,7 @@ std::optional<TournamentSpec> LeagueStore::find_tournament(const std::string& na
   for (const auto& e : nlohmann::json::parse(r[5]))
     t.entrants.push_back({e.at("name"), e.at("policy"), e.at("seed")});
   t.options = r[6];
+  t.sport_options = r[7];
   return t;
 }
 
@@ -66,9 +70,11 @@ std::vector<std::string> LeagueStore::tournament_names() {
 
 void LeagueStore::create_tournament(const TournamentSpec& t) {
   db_->query(
-      "INSERT INTO tournaments VALUES ($1,$2,$3,$4,$5,$6,$7,$8)",
+      "INSERT INTO tournaments (name, format, sport, mode, seed, time_limit_s, entrants, options, "
+      "sport_options) VALUES ($1,$2,$3,$4,$5,$6,$7,$8,$9)",
       {t.name, t.format, t.sport, t.mode, std::to_string(t.seed), sql::exact_text(t.time_limit_s),
-       entrants_json(t), t.options.empty() ? "{}" : t.options});
+       entrants_json(t), t.options.empty() ? "{}" : t.options,
+       t.sport_options.empty() ? "{}" : t.sport_options});
 }
 
 void LeagueStore::update_entrants(const TournamentSpec& t) {

@@ -17,7 +17,7 @@ namespace olympics::selfplay {
 
 struct Entrant {
   std::string name;    // unique in the tournament
-  std::string policy;  // a bot olympics-agent plays: zero, random
+  std::string policy;  // what olympics-agent plays: zero, random, scripted, mlp:FILE; or live:NAME
   std::uint64_t seed = 0;
 };
 
@@ -29,6 +29,7 @@ struct TournamentSpec {
   std::string mode = "1v1";
   std::uint64_t seed = 1;
   double time_limit_s = 0;
+  std::string sport_options = "{}";  // JSON: the sport's settings, sent with every match request
   std::vector<Entrant> entrants;
 };
 

@@ -41,13 +41,14 @@ std::vector<Entrant> parse_entrants(const std::vector<std::string>& specs, size_
     } else if (e.policy == "live" && colon != std::string::npos) {
       e.policy = spec;  // a trainer's own client plays it (olympics-agent --learner, or Python)
       e.name = spec.substr(colon + 1);
-    } else if (e.policy == "zero" || e.policy == "random") {
+    } else if (e.policy == "zero" || e.policy == "random" || e.policy == "scripted") {
       e.seed = colon == std::string::npos ? 1 : std::stoull(spec.substr(colon + 1));
       e.name = colon == std::string::npos ? e.policy : e.policy + "-" + spec.substr(colon + 1);
     } else {
       throw std::invalid_argument(
           "unknown entrant \"" + spec +
-          "\"; entrants: zero, random[:seed], mlp:<snapshot.safetensors>, live:<learner>");
+          "\"; entrants: zero, random[:seed], scripted[:seed], mlp:<snapshot.safetensors>, "
+          "live:<learner>");
     }
     if (int n = ++seen[e.name]; n > 1) e.name += "-" + std::to_string(n);
     out.push_back(e);
@@ -80,12 +81,15 @@ int main(int argc, char** argv) {
   run->add_option("--format", spec.format, "round-robin, double-round-robin, swiss, knockout")
       ->check(CLI::IsMember({"round-robin", "double-round-robin", "swiss", "knockout"}));
   run->add_option("--entrants", entrants,
-                  "zero, random[:seed], mlp:<snapshot>, live:<learner>; comma separated")
+                  "zero, random[:seed], scripted[:seed], mlp:<snapshot>, live:<learner>; comma "
+                  "separated")
       ->delimiter(',');
   run->add_option("--sport", spec.sport, "sport");
   run->add_option("--mode", spec.mode, "two-team mode: 1v1, 2v2, ...");
   run->add_option("--seed", spec.seed, "tournament seed (match seeds derive from it)");
   run->add_option("--time-limit", spec.time_limit_s, "seconds per match (0: the sport's default)");
+  run->add_option("--options", spec.sport_options,
+                  "the sport's settings for every match, JSON (olympics-server describe SPORT)");
   run->add_option("--servers", runner.servers, "server ids to use (default: any)")->delimiter(',');
   run->add_option("--parallel", runner.parallel, "games at once")->check(CLI::PositiveNumber);
   run->add_option("--lcm-url", runner.lcm_url, "LCM provider URL");
@@ -106,7 +110,7 @@ int main(int argc, char** argv) {
   sp->add_option("--strategy", selfplay.strategy,
                  "latest, alternating:E, mlagents:R, pfsp[:weighting]");
   sp->add_option("--bot-share", selfplay.bot_share, "share of games against a bot");
-  sp->add_option("--bots", bots, "bots: zero, random[:seed]")->delimiter(',');
+  sp->add_option("--bots", bots, "bots: zero, random[:seed], scripted[:seed]")->delimiter(',');
   sp->add_option("--matches", selfplay.matches, "games to play")->check(CLI::PositiveNumber);
   for (auto* cmd : {sp}) {
     cmd->add_option("--sport", spec.sport, "sport");
@@ -114,6 +118,8 @@ int main(int argc, char** argv) {
     cmd->add_option("--seed", spec.seed, "seed (match seeds and decisions derive from it)");
     cmd->add_option("--time-limit", spec.time_limit_s,
                     "seconds per match (0: the sport's default)");
+    cmd->add_option("--options", spec.sport_options,
+                    "the sport's settings for every match, JSON (olympics-server describe SPORT)");
     cmd->add_option("--servers", runner.servers, "server ids to use (default: any)")
         ->delimiter(',');
     cmd->add_option("--parallel", runner.parallel, "games at once")->check(CLI::PositiveNumber);
@@ -155,11 +161,16 @@ int main(int argc, char** argv) {
         selfplay.lag = runner.parallel;
         spec.options = selfplay.to_json().dump();
       }
+      const auto options = nlohmann::json::parse(spec.sport_options, nullptr, false);
+      if (!options.is_object())
+        throw std::invalid_argument(
+            "--options must be a JSON object such as '{\"touches\": 5}', got " +
+            spec.sport_options);
+      spec.sport_options = options.dump();
       if (auto existing = store.find_tournament(name)) {
         std::fprintf(stderr, "resuming %s\n", name.c_str());
         spec = *existing;
       } else {
-        team_slots(spec.mode, 0);  // refuses modes the league cannot play, before storing anything
         spec.entrants = *sp ? (bots.empty() ? std::vector<Entrant>{} : parse_entrants(bots, 1))
                             : parse_entrants(entrants, 2);
         store.create_tournament(spec);

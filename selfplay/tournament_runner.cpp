@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "channels.h"
+#include "olympics/error_t.hpp"
 #include "olympics/heartbeat_t.hpp"
 #include "olympics/league_assignment_t.hpp"
 #include "olympics/match_created_t.hpp"
@@ -18,14 +19,10 @@ constexpr auto kRequestResend = std::chrono::milliseconds(250);
 constexpr auto kProbeInterval = std::chrono::seconds(1);
 }  // namespace
 
-std::vector<int> team_slots(const std::string& mode, int team) {
-  const auto v = mode.find('v');
-  const int size = v == std::string::npos ? 0 : std::atoi(mode.substr(0, v).c_str());
-  if (size < 1 || mode != std::to_string(size) + "v" + std::to_string(size))
-    throw std::invalid_argument("the league plays two-team modes (1v1, 2v2, ...), not \"" + mode +
-                                "\"");
+std::vector<int> team_slots(const std::vector<int>& slot_teams, int team) {
   std::vector<int> slots;
-  for (int k = 0; k < size; ++k) slots.push_back(team * size + k);
+  for (size_t s = 0; s < slot_teams.size(); ++s)
+    if (slot_teams[s] == team) slots.push_back(static_cast<int>(s));
   return slots;
 }
 
@@ -55,6 +52,9 @@ TournamentRunner::TournamentRunner(LeagueStore& store, TournamentSpec spec, Runn
   transport_.subscribe(protocol::kResult, [this](const std::string&, const std::uint8_t* d, int n) {
     on_result(d, n);
   });
+  transport_.subscribe(protocol::kError, [this](const std::string&, const std::uint8_t* d, int n) {
+    on_error(d, n);
+  });
   games_ = store_.games(spec_.name);
   // Games that were on their way when a previous run stopped: find them again (same request id,
   // which the server answers with the same match) and restart their policy workers (a slot that
@@ -79,7 +79,12 @@ void TournamentRunner::on_announce(const std::uint8_t* data, int size) {
   if (!settings_.servers.empty() && std::find(settings_.servers.begin(), settings_.servers.end(),
                                               a->server_id) == settings_.servers.end())
     return;
-  if (std::find(a->sports.begin(), a->sports.end(), spec_.sport) == a->sports.end()) return;
+  if (std::find(a->sports.begin(), a->sports.end(), spec_.sport) == a->sports.end()) {
+    std::string offered;
+    for (const auto& sport : a->sports) offered += (offered.empty() ? "" : ", ") + sport;
+    other_servers_[a->server_id] = offered;
+    return;
+  }
   servers_[a->server_id] = {Clock::now(), a->capacity - a->active_matches};
 }
 
@@ -149,7 +154,9 @@ void TournamentRunner::keep_in_touch() {
       retry(g, "server " + g.server_id + " stopped announcing");
       return;  // in_flight_ changed
     }
-    if (g.match_id.empty() && now - f.last_request >= kRequestResend) {
+    // Until the server has described the match (also after a restart of the league), ask again:
+    // a request id it has seen gets the same match.
+    if (f.slot_teams.empty() && now - f.last_request >= kRequestResend) {
       olympics::match_request_t r;
       r.protocol_version = protocol::kProtocolVersion;
       r.request_id = g.request_id;
@@ -159,11 +166,11 @@ void TournamentRunner::keep_in_touch() {
       r.seed = static_cast<std::int64_t>(spec_.seed * 1000 + static_cast<std::uint64_t>(g.index));
       r.time_limit_s = static_cast<float>(spec_.time_limit_s);
       r.realtime = false;
+      r.options = spec_.sport_options;
       transport_.publish(protocol::kRequest, r);
       f.last_request = now;
     }
-    if (!g.match_id.empty() && !f.workers_started) start_workers(g);
-    if (!g.match_id.empty() && now - f.last_probe >= kProbeInterval) {
+    if (!g.match_id.empty() && !f.slot_teams.empty() && now - f.last_probe >= kProbeInterval) {
       assign_live(g);
       // Any message about a finished match makes its server say the result again.
       olympics::heartbeat_t h;
@@ -180,10 +187,36 @@ void TournamentRunner::on_created(const std::uint8_t* data, int size) {
   auto c = protocol::decode<olympics::match_created_t>(data, size);
   if (!c) return;
   Game* g = game_by_request(c->request_id);
-  if (!g || !g->match_id.empty()) return;
-  g->match_id = c->match_id;
-  save(*g);  // before the workers start, so a restart knows which match to look for
-  start_workers(*g);
+  if (!g) return;
+  InFlight& f = in_flight_[g->index];
+  if (!f.slot_teams.empty()) return;  // a repeated answer
+  std::vector<int> teams(c->slot_team.begin(), c->slot_team.end());
+  if (std::count(teams.begin(), teams.end(), 0) == 0 ||
+      std::count(teams.begin(), teams.end(), 1) == 0 ||
+      std::any_of(teams.begin(), teams.end(), [](int t) { return t < 0 || t > 1; }))
+    return stop("the league plays modes of two teams; " + spec_.sport + " " + spec_.mode +
+                " has other teams (choose 1v1, 2v2, ...)");
+  f.slot_teams = teams;
+  if (g->match_id.empty()) {
+    g->match_id = c->match_id;
+    save(*g);  // before the workers start, so a restart knows which match to look for
+  }
+  if (!f.workers_started) start_workers(*g);
+}
+
+// A server refused a game's request: a bad tournament spec (unknown sport or mode, a bad
+// setting) ends the run; a full server is asked again later.
+void TournamentRunner::on_error(const std::uint8_t* data, int size) {
+  auto e = protocol::decode<olympics::error_t>(data, size);
+  if (!e) return;
+  for (auto& g : games_) {
+    if (g.status != GameStatus::Dispatched || g.server_id != e->server_id ||
+        e->message.rfind("request " + g.request_id + ":", 0) != 0)
+      continue;
+    if (e->code == "FULL") return retry(g, e->message);
+    return stop("server " + e->server_id + " refused game " + std::to_string(g.index) + ": " +
+                e->code + ": " + e->message);
+  }
 }
 
 void TournamentRunner::start_workers(Game& g) {
@@ -198,7 +231,7 @@ void TournamentRunner::start_workers(Game& g) {
                                      "--match",
                                      g.match_id,
                                      "--slots",
-                                     slots_argument(team_slots(spec_.mode, team)),
+                                     slots_argument(team_slots(f.slot_teams, team)),
                                      "--policy",
                                      e.policy,
                                      "--policy-seed",
@@ -226,7 +259,7 @@ void TournamentRunner::assign_live(const Game& g) {
     a.learner = e.policy.substr(5);
     a.game = g.index;
     a.match_id = g.match_id;
-    a.slots = team_slots(spec_.mode, team);
+    a.slots = team_slots(in_flight_.at(g.index).slot_teams, team);
     a.num_slots = static_cast<int>(a.slots.size());
     a.opponent = spec_.entrants[team == 0 ? g.away : g.home].name;
     transport_.publish(protocol::kLeague, a);
@@ -273,6 +306,22 @@ void TournamentRunner::show_progress() {
   if (done == total) std::fprintf(stderr, "\n");
 }
 
+// Servers announce the sports they host: when some have been heard for a while and none hosts the
+// tournament's sport, waiting longer will not help.
+void TournamentRunner::refuse_if_no_server_offers_the_sport() {
+  const auto waited = std::chrono::duration<double>(Clock::now() - started_).count();
+  if (!servers_.empty() || other_servers_.empty() || waited < settings_.server_silence_s) return;
+  std::string seen;
+  for (const auto& [id, sports] : other_servers_)
+    seen += (seen.empty() ? "" : "; ") + id + ": " + sports;
+  stop("no server hosts the sport \"" + spec_.sport + "\" (servers heard: " + seen + ")");
+}
+
+// Called from LCM's callbacks, which must not throw: run() throws once the callback returned.
+void TournamentRunner::stop(const std::string& why) {
+  if (fatal_.empty()) fatal_ = why;
+}
+
 void TournamentRunner::run() {
   started_ = Clock::now();
   for (;;) {
@@ -280,6 +329,8 @@ void TournamentRunner::run() {
     dispatch();
     keep_in_touch();
     transport_.handle(10);
+    refuse_if_no_server_offers_the_sport();
+    if (!fatal_.empty()) throw std::invalid_argument(fatal_);
   }
   show_progress();
 }

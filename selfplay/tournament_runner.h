@@ -28,16 +28,17 @@ struct RunnerSettings {
   bool progress = true;              // a progress bar on stderr
 };
 
-// The slots one team plays in a two-team mode: "2v2", team 1 -> {2, 3}. Each entrant plays all the
-// slots of its team. Throws for other modes.
-std::vector<int> team_slots(const std::string& mode, int team);
+// The slots of `team` from a match's slot-to-team mapping (match_created_t.slot_team), in slot
+// order. Each entrant plays all the slots of its team.
+std::vector<int> team_slots(const std::vector<int>& slot_teams, int team);
 
 class TournamentRunner {
  public:
   TournamentRunner(LeagueStore& store, TournamentSpec spec, RunnerSettings settings,
                    std::unique_ptr<Scheduler> scheduler);
   ~TournamentRunner();
-  // Returns when every game has a result.
+  // Returns when every game has a result; throws std::invalid_argument when the servers refuse
+  // the tournament's sport, mode or settings.
   void run();
 
  private:
@@ -48,6 +49,7 @@ class TournamentRunner {
   };
   struct InFlight {
     Clock::time_point last_request, last_probe;
+    std::vector<int> slot_teams;  // from the server's description of the match
     bool workers_started = false;
     std::vector<std::unique_ptr<Process>> workers;
   };
@@ -57,6 +59,9 @@ class TournamentRunner {
   void on_created(const std::uint8_t* data, int size);
   void on_result(const std::uint8_t* data, int size);
   void on_announce(const std::uint8_t* data, int size);
+  void on_error(const std::uint8_t* data, int size);
+  void stop(const std::string& why);
+  void refuse_if_no_server_offers_the_sport();
   void start_workers(Game& game);
   void assign_live(const Game& game);
   void retry(Game& game, const std::string& why);
@@ -71,9 +76,11 @@ class TournamentRunner {
   RunnerSettings settings_;
   protocol::Transport transport_;
   std::vector<Game> games_;
-  std::map<int, InFlight> in_flight_;  // by game index
-  std::map<std::string, Server> servers_;
+  std::map<int, InFlight> in_flight_;                 // by game index
+  std::map<std::string, Server> servers_;             // those that host the sport
+  std::map<std::string, std::string> other_servers_;  // id -> the sports it hosts
   Clock::time_point started_;
+  std::string fatal_;  // why the run cannot go on (a bad spec the servers refuse)
 };
 
 }  // namespace olympics::selfplay

@@ -120,6 +120,7 @@ int results(const std::string& location, int limit, const std::string& sport, bo
                      {"winner_team", m.winner_team},
                      {"scores", m.scores},
                      {"participants", p},
+                     {"options", nlohmann::json::parse(m.options, nullptr, false)},
                      {"server_id", m.server_id},
                      {"finished_at_unix", m.finished_at_unix}});
       continue;

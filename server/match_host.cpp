@@ -189,13 +189,15 @@ void MatchHost::on_request(const std::uint8_t* data, int size) {
   MatchIdentity id;
   id.server_id = settings_.server_id;
   id.sport = req->sport;
-  id.settings = {req->mode, static_cast<std::uint64_t>(req->seed),
-                 req->time_limit_s > 0 ? req->time_limit_s : sport->default_time_limit_s(),
-                 options};
+  id.settings = {req->mode, static_cast<std::uint64_t>(req->seed), req->time_limit_s, options};
   id.realtime = req->realtime;
   std::unique_ptr<sports::SportMatch> game;
   try {
     game = sport->create(id.settings);
+    // What is in force, recorded with the match and its replay: the sport's time limit when
+    // the request left it to the sport, every setting with its default filled in.
+    id.settings.time_limit_s = game->time_limit_s();
+    id.settings.options = sports::merge_settings(sport->name(), sport->settings(), options);
   } catch (const std::invalid_argument& e) {
     return error("", "", "BAD_REQUEST", "request " + req->request_id + ": " + e.what());
   }

@@ -50,6 +50,14 @@ MatchRuntime::MatchRuntime(MatchIdentity identity, RuntimeSettings settings,
   d.action_size = game_->action_size();
   d.obs_channel = protocol::obs_channel(identity_.match_id);
   d.action_channel = protocol::action_channel(identity_.match_id);
+  d.control_hz = core::kControlHz;
+  d.time_limit_s = static_cast<float>(game_->time_limit_s());
+  d.options = identity_.settings.options.dump();
+  for (const auto& block : game_->layout().observation) {
+    d.obs_block_names.push_back(block.name);
+    d.obs_block_sizes.push_back(block.size);
+  }
+  d.num_obs_blocks = static_cast<int>(d.obs_block_names.size());
   slot_owner_.assign(n, -1);
   current_.assign(n, std::vector<float>(game_->action_size(), 0.0f));
   pending_ = current_;
@@ -413,6 +421,7 @@ void MatchRuntime::finish(Clock::time_point now) {
     r.policy_versions.push_back(k ? k->policy_version : "");
   }
   r.info = out.info.dump();
+  r.options = identity_.settings.options.dump();
   // The host stores the result first and then publishes it (publish_result), so whoever hears
   // the result can read it from the store.
 }
@@ -428,6 +437,7 @@ StoredMatch MatchRuntime::stored_result() const {
   m.winner_team = r.winner_team;
   m.scores.assign(r.scores.begin(), r.scores.end());
   m.info = r.info;
+  m.options = r.options;
   m.finished_at_unix = finished_at_unix_;
   for (int s = 0; s < r.num_slots; ++s)
     m.participants.push_back(

@@ -3,9 +3,10 @@
 //
 // Sync mode: tick t waits for every client's action for t, republishing tick t's observation to
 // the clients still missing every `resend_interval_s`, up to `action_deadline_s`; then missing
-// actions repeat the previous one. Realtime mode: the clock ticks at the control rate (30 Hz); whatever arrived
-// since the last tick applies, late actions apply to the next tick. In both, a client that
-// misses `max_missed_ticks` ticks in a row, or is silent for `silent_timeout_s`, forfeits.
+// actions repeat the previous one. Realtime mode: the clock ticks at the control rate (30 Hz);
+// whatever arrived since the last tick applies, late actions apply to the next tick. In both, a
+// client that misses `max_missed_ticks` ticks in a row, or is silent for `silent_timeout_s`,
+// forfeits.
 #pragma once
 
 #include <chrono>

@@ -20,7 +20,8 @@ CREATE TABLE IF NOT EXISTS matches (
   winner_team      INTEGER NOT NULL,
   scores           TEXT NOT NULL,
   info             TEXT NOT NULL,
-  finished_at_unix BIGINT NOT NULL
+  finished_at_unix BIGINT NOT NULL,
+  options          TEXT NOT NULL DEFAULT '{}'
 );
 CREATE TABLE IF NOT EXISTS participants (
   match_id       TEXT NOT NULL REFERENCES matches(match_id),
@@ -34,11 +35,16 @@ CREATE TABLE IF NOT EXISTS participants (
 CREATE INDEX IF NOT EXISTS matches_finished ON matches(finished_at_unix);
 )sql";
 
+// Columns added since the first schema, for stores made before them: (column, definition).
+inline constexpr const char* kResultsAddedColumns[][2] = {
+    {"options", "TEXT NOT NULL DEFAULT '{}'"},  // protocol 3: the sport's settings in force
+};
+
 // Both stores read rows through these, so the column order is written once. Row is anything with
 // text(col), integer(col) and real(col).
 inline constexpr const char* kSelectMatches =
     "SELECT match_id, server_id, server_version, sport, mode, seed, realtime, ticks, wall_time_s, "
-    "reason, winner_team, scores, info, finished_at_unix FROM matches ";
+    "reason, winner_team, scores, info, finished_at_unix, options FROM matches ";
 inline constexpr const char* kSelectParticipants =
     "SELECT slot, team, agent, policy, policy_version FROM participants ";
 
@@ -49,7 +55,7 @@ StoredMatch match_from_row(const Row& q) {
   m.sport = q.text(3), m.mode = q.text(4), m.seed = q.integer(5), m.realtime = q.integer(6) != 0;
   m.ticks = static_cast<int>(q.integer(7)), m.wall_time_s = q.real(8), m.reason = q.text(9);
   m.winner_team = static_cast<int>(q.integer(10)), m.scores = scores_from_text(q.text(11));
-  m.info = q.text(12), m.finished_at_unix = q.integer(13);
+  m.info = q.text(12), m.finished_at_unix = q.integer(13), m.options = q.text(14);
   return m;
 }
 

@@ -24,6 +24,8 @@ struct TextRow {
 ResultsStore::ResultsStore(const std::string& location)
     : db_(sql::open_sql_database(location, sql::Durability::ProcessCrash)) {
   db_->script(kResultsSchema);
+  for (const auto& [column, definition] : kResultsAddedColumns)
+    sql::add_column_if_missing(*db_, "matches", column, definition);
 }
 
 ResultsStore::~ResultsStore() = default;
@@ -37,11 +39,15 @@ std::string ResultsStore::describe() const { return db_->describe(); }
 void ResultsStore::record(const StoredMatch& m) {
   std::lock_guard lock(mutex_);
   db_->transaction([&] {
-    db_->query("INSERT INTO matches VALUES ($1,$2,$3,$4,$5,$6,$7,$8,$9,$10,$11,$12,$13,$14)",
-               {m.match_id, m.server_id, m.server_version, m.sport, m.mode, std::to_string(m.seed),
-                m.realtime ? "1" : "0", std::to_string(m.ticks), sql::exact_text(m.wall_time_s),
-                m.reason, std::to_string(m.winner_team), scores_to_text(m.scores), m.info,
-                std::to_string(m.finished_at_unix)});
+    db_->query(
+        "INSERT INTO matches (match_id, server_id, server_version, sport, mode, seed, "
+        "realtime, ticks, wall_time_s, reason, winner_team, scores, info, "
+        "finished_at_unix, options) VALUES ($1,$2,$3,$4,$5,$6,$7,$8,$9,$10,$11,$12,$13,$14,"
+        "$15)",
+        {m.match_id, m.server_id, m.server_version, m.sport, m.mode, std::to_string(m.seed),
+         m.realtime ? "1" : "0", std::to_string(m.ticks), sql::exact_text(m.wall_time_s), m.reason,
+         std::to_string(m.winner_team), scores_to_text(m.scores), m.info,
+         std::to_string(m.finished_at_unix), m.options});
     for (const auto& p : m.participants)
       db_->query("INSERT INTO participants VALUES ($1,$2,$3,$4,$5,$6)",
                  {m.match_id, std::to_string(p.slot), std::to_string(p.team), p.agent, p.policy,

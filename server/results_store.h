@@ -37,6 +37,7 @@ struct StoredMatch {
   int winner_team = -1;
   std::vector<double> scores;  // per team
   std::string info;            // JSON
+  std::string options = "{}";  // the sport's settings in force, JSON
   std::int64_t finished_at_unix = 0;
   std::vector<StoredParticipant> participants;
 };

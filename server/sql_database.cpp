@@ -128,6 +128,15 @@ void SqlDatabase::transaction(const std::function<void()>& work) {
   }
 }
 
+void add_column_if_missing(SqlDatabase& db, const std::string& table, const std::string& column,
+                           const std::string& definition) {
+  try {
+    db.query("SELECT " + column + " FROM " + table + " LIMIT 0");
+  } catch (const std::runtime_error&) {
+    db.query("ALTER TABLE " + table + " ADD COLUMN " + column + " " + definition);
+  }
+}
+
 std::string exact_text(double value) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.17g", value);

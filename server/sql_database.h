@@ -25,6 +25,11 @@ class SqlDatabase {
   virtual std::string describe() const = 0;  // the location, without a password
 };
 
+// Adds `column` to `table` (a store made before the column existed); nothing when it is there.
+// Names come from the program, never from users.
+void add_column_if_missing(SqlDatabase& db, const std::string& table, const std::string& column,
+                           const std::string& definition);
+
 // A double as text that reads back to the same double (17 significant digits).
 std::string exact_text(double value);
 

@@ -131,6 +131,9 @@ class SportMatch {
   virtual int obs_size() const = 0;
   virtual int action_size() const = 0;
   virtual const std::vector<std::string>& reward_terms() const = 0;
+  // The mode's layout (the sizes above derive from it) and the time limit in force.
+  virtual const Layout& layout() const = 0;
+  virtual double time_limit_s() const = 0;
 
   // Observation of tick `tick()` for one slot (self observation, then the task's).
   virtual void observe(int slot, std::span<float> out) const = 0;

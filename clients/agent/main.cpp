@@ -33,9 +33,17 @@ void print_calls(const olympics::client::Observation& obs) {
   }
 }
 
+// What the policies are told of the match they are about to play.
+olympics::client::MatchInfo match_info(const olympics::match_created_t& m) {
+  if (m.control_hz <= 0)
+    throw std::invalid_argument("the server sent no control rate; upgrade it to protocol 3");
+  return {m.sport, m.mode, 1.0 / m.control_hz,
+          olympics::client::ObservationLayout(m.obs_block_names, m.obs_block_sizes), m.action_size};
+}
+
 void play_one(olympics::client::MatchClient& client, const std::string& match_id,
-              const std::vector<int>& slots, olympics::client::Policy& policy,
-              const std::string& agent_name, const std::string& policy_name, int think_ms,
+              const std::vector<int>& slots, const std::string& policy_name,
+              std::uint64_t policy_seed, const std::string& agent_name, int think_ms,
               double timeout_s, bool json, bool calls) {
   const auto match = client.join(match_id, slots, timeout_s);
   std::fprintf(stderr, "%s joined %s (%s %s) slots", agent_name.c_str(), match.match_id.c_str(),
@@ -43,11 +51,17 @@ void play_one(olympics::client::MatchClient& client, const std::string& match_id
   for (int s : slots) std::fprintf(stderr, " %d", s);
   std::fprintf(stderr, " with policy %s\n", policy_name.c_str());
 
+  // One policy per slot: scripted players keep state (their gait, the ball they chase).
+  std::vector<std::unique_ptr<olympics::client::Policy>> policies;
+  for (size_t i = 0; i < slots.size(); ++i) {
+    policies.push_back(olympics::client::make_policy(policy_name, policy_seed + i));
+    policies.back()->start(match_info(match));
+  }
   std::vector<std::vector<float>> actions(slots.size(), std::vector<float>(match.action_size));
   while (auto obs = client.next(timeout_s)) {
     if (calls) print_calls(*obs);
     if (obs->all_done()) break;
-    for (size_t i = 0; i < obs->slots.size(); ++i) policy.act(obs->obs[i], actions[i]);
+    for (size_t i = 0; i < obs->slots.size(); ++i) policies[i]->act(obs->obs[i], actions[i]);
     if (think_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(think_ms));
     client.act(obs->tick, actions);
   }
@@ -59,8 +73,9 @@ void play_one(olympics::client::MatchClient& client, const std::string& match_id
         {"scores", r.scores},     {"agents", r.agent_names}, {"slot_team", r.slot_team}};
     std::printf("%s\n", out.dump().c_str());
   } else {
+    const double seconds = r.ticks / static_cast<double>(client.match().control_hz);
     std::printf("match %s (%s %s) over after %d ticks (%.1f s simulated): %s\n", r.match_id.c_str(),
-                r.sport.c_str(), r.mode.c_str(), r.ticks, r.ticks / 30.0, r.reason.c_str());
+                r.sport.c_str(), r.mode.c_str(), r.ticks, seconds, r.reason.c_str());
     for (int t = 0; t < r.num_teams; ++t) {
       std::string names;
       for (int s = 0; s < r.num_slots; ++s)
@@ -100,7 +115,7 @@ int main(int argc, char** argv) {
                  "the sport's settings as JSON, e.g. '{\"format\": \"tiebreak\"}'");
   app.add_option("--server", request.server_id, "ask this server only");
   app.add_option("--slots", slots, "slots to play")->delimiter(',');
-  app.add_option("--policy", policy_name, "zero, random");
+  app.add_option("--policy", policy_name, "zero, random, scripted, mlp:<snapshot.safetensors>");
   app.add_option("--policy-seed", policy_seed, "seed of a random policy");
   app.add_option("--name", options.agent_name, "agent name recorded with the result");
   app.add_option("--policy-id", options.policy_id, "policy id recorded with the result");
@@ -121,7 +136,7 @@ int main(int argc, char** argv) {
   if (options.policy_id.empty()) options.policy_id = policy_name;
 
   try {
-    auto policy = make_policy(policy_name, policy_seed);
+    make_policy(policy_name, policy_seed);  // an unknown policy is refused before any match
     if (!learner.empty() && options.agent_name == "agent") options.agent_name = learner;
     MatchClient client(options);
     // One match, or (a live learner) every match the league assigns, `games` of them.
@@ -132,7 +147,7 @@ int main(int argc, char** argv) {
         slots = assignment.slots;
       }
       if (match_id.empty()) match_id = client.request_match(request, timeout_s).match_id;
-      play_one(client, match_id, slots, *policy, options.agent_name, policy_name, think_ms,
+      play_one(client, match_id, slots, policy_name, policy_seed, options.agent_name, think_ms,
                timeout_s, json, calls);
       match_id.clear();
     }

@@ -48,7 +48,7 @@ std::vector<std::string> policy_names() {
 std::unique_ptr<Policy> make_policy(const std::string& name, std::uint64_t seed) {
   if (name == "zero") return std::make_unique<ZeroPolicy>();
   if (name == "random") return std::make_unique<RandomPolicy>(seed);
-  if (name == "scripted") return std::make_unique<ScriptedRacketPolicy>();
+  if (name == "scripted") return std::make_unique<ScriptedPolicy>();
   if (name.rfind("mlp:", 0) == 0) return std::make_unique<SnapshotPolicy>(name.substr(4));
   std::string known;
   for (const auto& n : policy_names()) known += (known.empty() ? "" : ", ") + n;

@@ -12,7 +12,6 @@ constexpr int kActions = 69;
 constexpr int kBodyPos = 1;     // bodies 1..23 relative to the root, 3 each
 constexpr int kRotations = 70;  // 24 bodies x (x axis, z axis), 6 each
 constexpr int kLinVel = 214;    // 24 x 3; the root first
-constexpr double kControlDt = 1.0 / 30;
 
 // Body indices (HUMANOID.md section 1.1). Joint j moves body j (j >= 1).
 enum Body {

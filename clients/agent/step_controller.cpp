@@ -134,7 +134,7 @@ void StepController::act(std::span<const float> o, const Eigen::Vector2d& target
 
   flat_foot(o, a, kLKnee);
   flat_foot(o, a, kRKnee);
-  phase_s_ += kControlDt;
+  phase_s_ += control_dt_;
 }
 
 }  // namespace olympics::client

@@ -46,7 +46,9 @@ struct StepGains {
 
 class StepController {
  public:
-  explicit StepController(const StepGains& gains = {}) : gains_(gains) {}
+  // `control_dt`: seconds per tick, the match's (MatchInfo::control_dt).
+  StepController(const StepGains& gains, double control_dt)
+      : gains_(gains), control_dt_(control_dt) {}
 
   // Writes the leg joints (hips, knees, ankles) of `action` to walk toward `target`, a ground
   // point in the heading frame relative to the root, turning by `turn` radians (left positive)
@@ -61,6 +63,7 @@ class StepController {
   void begin_step(std::span<const float> o, bool left_swings);
 
   StepGains gains_;
+  double control_dt_;
   bool stepping_ = false;
   bool left_swings_ = true;
   double phase_s_ = 0;  // time into the current step

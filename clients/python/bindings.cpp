@@ -32,6 +32,13 @@ py::dict describe(const olympics::match_created_t& m) {
   d["slot_team"] = m.slot_team;
   d["obs_size"] = m.obs_size;
   d["action_size"] = m.action_size;
+  d["control_hz"] = m.control_hz;
+  d["time_limit_s"] = m.time_limit_s;
+  d["options"] = m.options;
+  py::list blocks;  // (name, size) in order: where each named block of an observation lies
+  for (int i = 0; i < m.num_obs_blocks; ++i)
+    blocks.append(py::make_tuple(m.obs_block_names[i], m.obs_block_sizes[i]));
+  d["obs_blocks"] = blocks;
   return d;
 }
 
@@ -48,6 +55,8 @@ py::dict result_dict(const olympics::match_result_t& r) {
   d["scores"] = r.scores;
   d["slot_team"] = r.slot_team;
   d["agent_names"] = r.agent_names;
+  d["options"] = r.options;
+  d["info"] = r.info;
   return d;
 }
 

@@ -35,6 +35,8 @@ class SmplMatch : public SportMatch {
   int obs_size() const final { return layout_.observation_size(); }
   int action_size() const final { return layout_.action_size(); }
   const std::vector<std::string>& reward_terms() const final { return reward_names_; }
+  const Layout& layout() const final { return layout_; }
+  double time_limit_s() const final { return time_limit_ticks_ * scene_.settings().control_dt; }
   void observe(int slot, std::span<float> out) const final;
   void step(const std::vector<std::span<const float>>& actions) final;
   const TickOutcome& outcome() const final { return outcome_; }
@@ -76,7 +78,6 @@ class SmplMatch : public SportMatch {
   const core::Humanoid& player(int slot) const { return scene_.humanoid(slot); }
   const ModeSpec& mode() const { return mode_; }
   const std::vector<int>& teams() const { return mode_.slot_teams; }
-  const Layout& layout() const { return layout_; }
   double time() const { return time_; }  // seconds simulated
   // Falls this tick: is the slot down (a body other than its feet on the ground, or too low),
   // and which slots went down this tick.

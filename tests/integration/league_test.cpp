@@ -227,9 +227,29 @@ TEST(League, TwoVersusTwoEachEntrantPlaysItsWholeTeam) {
                "--entrants", "zero,zero", "--lcm-url", servers.url},
               dir + "/ffa.log");
   EXPECT_EQ(ffa.wait(20), 2);
-  EXPECT_NE(ffa.output().find("the league plays two-team modes (1v1, 2v2, ...), not \"ffa4\""),
+  EXPECT_NE(ffa.output().find("the league plays modes of two teams; sandbox ffa4 has other teams"),
             std::string::npos)
       << ffa.output();
+}
+
+// A tournament the servers refuse (an unknown sport, a bad setting) stops with their reason.
+TEST(League, ARefusedSpecStopsWithTheServersReason) {
+  TwoServers servers;
+  const std::string dir = temp_dir(), db = dir + "/league.db";
+  Process curling({program("olympics-league"), "run", "--db", db, "--name", "curling", "--sport",
+                   "curling", "--entrants", "zero,zero", "--lcm-url", servers.url, "--quiet"},
+                  dir + "/curling.log");
+  EXPECT_EQ(curling.wait(20), 2);
+  EXPECT_NE(curling.output().find("no server hosts the sport \"curling\""), std::string::npos)
+      << curling.output();
+  EXPECT_NE(curling.output().find("alpha: sandbox, tennis"), std::string::npos) << curling.output();
+  Process setting({program("olympics-league"), "run", "--db", db, "--name", "setting", "--sport",
+                   "tennis", "--options", R"({"net_height": "high"})", "--entrants", "zero,zero",
+                   "--lcm-url", servers.url, "--quiet"},
+                  dir + "/setting.log");
+  EXPECT_EQ(setting.wait(20), 2);
+  EXPECT_NE(setting.output().find("BAD_REQUEST"), std::string::npos) << setting.output();
+  EXPECT_NE(setting.output().find("net_height"), std::string::npos) << setting.output();
 }
 
 TEST(League, ALiveLearnerPlaysTheMatchesTheLeagueAssignsIt) {

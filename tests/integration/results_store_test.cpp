@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "server_fixture.h"
+#include "sql_database.h"
 
 namespace olympics::testing {
 namespace {
@@ -34,6 +35,7 @@ server::StoredMatch sample(const std::string& id, const std::string& sport, std:
   m.winner_team = 1;
   m.scores = {1.0 / 3.0, 19.9};
   m.info = R"({"events":[]})";
+  m.options = R"({"net_height":0.914})";
   m.finished_at_unix = when;
   m.participants = {{0, 0, "alice", "mlp", "v3"}, {1, 1, "bob", "zero", ""}};
   return m;
@@ -61,6 +63,7 @@ TEST_P(ResultsStore, RecordsFindsAndListsMatches) {
   EXPECT_EQ(a->winner_team, 1);
   EXPECT_DOUBLE_EQ(a->scores[0], 1.0 / 3.0);  // scores survive the round trip exactly
   EXPECT_EQ(a->info, R"({"events":[]})");
+  EXPECT_EQ(a->options, R"({"net_height":0.914})");
   ASSERT_EQ(a->participants.size(), 2u);
   EXPECT_EQ(a->participants[0].policy_version, "v3");
   EXPECT_EQ(a->participants[1].agent, "bob");
@@ -79,6 +82,30 @@ TEST_P(ResultsStore, RecordsFindsAndListsMatches) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, ResultsStore, ::testing::Values("sqlite", "postgresql"));
+
+// A results file written before protocol 3 (no options column) opens, keeps its rows, and
+// takes new matches with their settings.
+TEST(ResultsStoreUpgrade, AStoreWithoutTheOptionsColumnGainsIt) {
+  const std::string path = temp_dir() + "/old-results.db";
+  {
+    auto old = sql::open_sql_database(path);
+    old->script(
+        "CREATE TABLE matches (match_id TEXT PRIMARY KEY, server_id TEXT NOT NULL, server_version "
+        "TEXT NOT NULL, sport TEXT NOT NULL, mode TEXT NOT NULL, seed BIGINT NOT NULL, realtime "
+        "INTEGER NOT NULL, ticks INTEGER NOT NULL, wall_time_s DOUBLE PRECISION NOT NULL, reason "
+        "TEXT NOT NULL, winner_team INTEGER NOT NULL, scores TEXT NOT NULL, info TEXT NOT NULL, "
+        "finished_at_unix BIGINT NOT NULL);"
+        "INSERT INTO matches VALUES ('old-1','s','0.1.0','sandbox','1v1',1,0,30,1.0,'time_limit',"
+        "-1,'1,1','{}',100);");
+  }
+  auto store = server::open_results_store(path);
+  auto old = store->find("old-1");
+  ASSERT_TRUE(old);
+  EXPECT_EQ(old->ticks, 30);
+  EXPECT_EQ(old->options, "{}");
+  store->record(sample("new-1", "tennis", 200));
+  EXPECT_EQ(store->find("new-1")->options, R"({"net_height":0.914})");
+}
 
 TEST(ResultsStoreErrors, UnreachablePlacesSayWhatToCheck) {
   try {

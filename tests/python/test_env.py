@@ -41,6 +41,13 @@ class EnvAgainstRealServer(unittest.TestCase):
         self.assertEqual(observations["slot_0"].shape, (366,))
         self.assertEqual(observations["slot_0"].dtype, np.float32)
         self.assertLessEqual(float(np.abs(observations["slot_0"]).max()), 5.0)
+        # The server says what each block of the observation is, and the tick length.
+        self.assertEqual(env.description["control_hz"], 30)
+        self.assertEqual(list(env.obs_blocks), ["self", "time_remaining", "others"])
+        self.assertEqual(env.obs_blocks["others"], slice(359, 366))
+        self.assertEqual(env.block(observations["slot_0"], "time_remaining").shape, (1,))
+        with self.assertRaises(KeyError):
+            env.block(observations["slot_0"], "ball_position")
         rng = np.random.default_rng(0)
         steps, returns = 0, 0.0
         while env.agents:
@@ -89,6 +96,22 @@ class EnvAgainstRealServer(unittest.TestCase):
         self.assertEqual(league.returncode, 0, out)
         self.assertIn("torch", out)
         self.assertEqual(env.result["agent_names"][env.assignment["slots"][0]], "torch")
+
+    def test_the_settings_in_force_are_described_and_stored(self):
+        env = OlympicsParallelEnv(sport="tennis", mode="ball_return", lcm_url=self.url,
+                                  sport_options={"net_height": 0.914})
+        env.reset(seed=1)
+        options = json.loads(env.description["options"])
+        self.assertEqual(options["net_height"], 0.914)
+        self.assertEqual(options["format"], "sets", "defaults are filled in")
+        self.assertEqual(env.description["time_limit_s"], 1800.0, "the sport's default")
+        self.assertIn("ball_position", env.obs_blocks)
+        while env.agents:
+            env.step({a: np.zeros(69, dtype=np.float32) for a in env.agents})
+        self.assertEqual(json.loads(env.result["options"]), options)
+        stored = sqlite3.connect(self.db).execute(
+            "SELECT options FROM matches WHERE match_id = ?", (env.result["match_id"],)).fetchone()
+        self.assertEqual(json.loads(stored[0]), options)
 
     def test_errors_reach_python(self):
         env = OlympicsParallelEnv(sport="curling", lcm_url=self.url)

@@ -1,17 +1,17 @@
 // The scripted baseline's legs and its play: it walks where it is sent without falling, and in
 // ball-return episodes it moves toward where the ball will come.
-#include "scripted_policy.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "core/control_rate.h"
 #include "core/humanoid_assets.h"
 #include "core/humanoid_scene.h"
 #include "core/rotation.h"
 #include "core/self_observation.h"
 #include "racket/racket_equipment.h"
 #include "registry.h"
+#include "scripted_racket.h"
 #include "step_controller.h"
 
 namespace olympics::client {
@@ -28,7 +28,7 @@ Walk walk_to(const Eigen::Vector2d& target, double seconds) {
   sports::equipment::attach_equipment(spec, sports::racket::tennis_racket());
   core::HumanoidScene scene;
   scene.add_humanoid(spec, {{0, 0, 0}, 0});
-  StepController legs;
+  StepController legs({}, core::kControlDt);
   std::vector<float> obs(358), act(69);
   Walk w;
   Eigen::Vector3d root = Eigen::Vector3d::Zero();
@@ -71,7 +71,7 @@ TEST(StepController, TargetReachedMidStepGivesFiniteActions) {
   scene.add_humanoid(spec);
   std::vector<float> obs(358), act(69, 0.0f);
   core::write_self_observation(scene.humanoid(0).body_states(), obs);
-  StepController legs;
+  StepController legs({}, core::kControlDt);
   legs.act(obs, {1, 0}, 0, act);
   ASSERT_TRUE(legs.stepping());
   legs.act(obs, {0, 0}, 0, act);
@@ -81,11 +81,14 @@ TEST(StepController, TargetReachedMidStepGivesFiniteActions) {
 // Ball-return episodes: when the ball will pass far from where the racket meets it, the player
 // has moved toward the side it comes to by the time it arrives.
 TEST(ScriptedRacketPolicy, MovesTowardTheComingBall) {
-  constexpr int kCourtY = 358 + 19, kBallY = 358 + 1, kBallX = 358;
   int far_balls = 0, moved_toward = 0;
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     auto match = sports::sport_or_throw("tennis").create({"ball_return", seed, 30.0, {}});
+    const auto layout = ObservationLayout::from_blocks(match->layout().observation);
+    const int kCourtY = layout.offset("court_position") + 1;
+    const int kBallX = layout.offset("ball_position"), kBallY = kBallX + 1;
     ScriptedRacketPolicy policy;
+    policy.start({"tennis", "ball_return", core::kControlDt, layout, 69});
     std::vector<float> obs(match->obs_size()), act(69);
     match->observe(0, obs);
     const double start_y = obs[kCourtY];

@@ -34,6 +34,7 @@ class OlympicsParallelEnv:
         self._episode = itertools.count()
         self._tick = None
         self.description = None
+        self.obs_blocks = {}  # block name -> slice of an observation, set by reset()
         self.result = None
         self.agents = []
         self.possible_agents = []
@@ -74,6 +75,10 @@ class OlympicsParallelEnv:
         elif slots is None:
             raise ValueError("pass slots=[...] to join a match by its id")
         self.description = self._client.join(match_id, slots, self.timeout_s)
+        self.obs_blocks, at = {}, 0
+        for name, size in self.description["obs_blocks"]:
+            self.obs_blocks[name] = slice(at, at + size)
+            at += size
         self.possible_agents = [f"slot_{s}" for s in slots]
         self.agents = list(self.possible_agents)
         self.result = None
@@ -105,6 +110,12 @@ class OlympicsParallelEnv:
 
     def close(self):
         self.agents = []
+
+    def block(self, observation, name):
+        """The named block of an observation ("self", "ball_position", ...): describe lists them."""
+        if name not in self.obs_blocks:
+            raise KeyError(f"no observation block {name!r}; blocks: {', '.join(self.obs_blocks)}")
+        return observation[self.obs_blocks[name]]
 
     def _unpack(self, batch):
         self._tick = batch["tick"]
