@@ -35,8 +35,11 @@ void RallyReferee::event(const char* name, double time, int slot) {
 
 void RallyReferee::lose(int team, int culprit, const std::string& reason) {
   if (call_) return;
-  call_ = PointCall{1 - team, team, culprit, reason};
-  nlohmann::json e = {{"call", "point"}, {"winner_team", 1 - team}, {"reason", reason}};
+  // Ball return has one team: the point is lost to the launcher, which is no team.
+  const bool two_teams = std::find(teams_.begin(), teams_.end(), 1) != teams_.end();
+  const int winner = two_teams ? 1 - team : -1;
+  call_ = PointCall{winner, team, culprit, reason};
+  nlohmann::json e = {{"call", "point"}, {"winner_team", winner}, {"reason", reason}};
   if (culprit >= 0) e["culprit_slot"] = culprit;
   events_.push_back(std::move(e));
 }

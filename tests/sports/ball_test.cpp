@@ -36,6 +36,8 @@ struct BounceTest {
   double drop, lo, hi;  // official drop height and rebound range
 };
 
+void PrintTo(const BounceTest& t, std::ostream* os) { *os << t.spec.name; }
+
 class OfficialBounce : public ::testing::TestWithParam<BounceTest> {};
 
 TEST_P(OfficialBounce, ReboundIsInTheOfficialRange) {
@@ -51,7 +53,8 @@ INSTANTIATE_TEST_SUITE_P(Balls, OfficialBounce,
                          ::testing::Values(BounceTest{tennis_ball(), 2.54, 1.35, 1.47},
                                            BounceTest{table_tennis_ball(), 0.305, 0.24, 0.26},
                                            BounceTest{soccer_ball(), 2.0, 1.2, 1.65},
-                                           BounceTest{basketball(), 1.8, 1.2, 1.4}));
+                                           BounceTest{basketball(), 1.8, 1.2, 1.4}),
+                         [](const auto& info) { return info.param.spec.name; });
 
 TEST(Ball, MassesAndQuadraticDrag) {
   core::PhysicsWorld world({.gravity = 0});

@@ -31,6 +31,8 @@ struct Equipment {
   double ball_radius, max_ball_speed;
 };
 
+void PrintTo(const Equipment& e, std::ostream* os) { *os << e.name; }
+
 class NoTunnelling : public ::testing::TestWithParam<Equipment> {};
 
 TEST_P(NoTunnelling, EveryDenseContactIsFoundAndNoLater) {
@@ -81,7 +83,8 @@ TEST_P(NoTunnelling, EveryDenseContactIsFoundAndNoLater) {
 
 INSTANTIATE_TEST_SUITE_P(Equipment, NoTunnelling,
                          ::testing::Values(Equipment{"racket", {0.15, 0.02}, 0.032, 70.0},
-                                           Equipment{"paddle", {0.08, 0.01}, 0.020, 30.0}));
+                                           Equipment{"paddle", {0.08, 0.01}, 0.020, 30.0}),
+                         [](const auto& info) { return std::string(info.param.name); });
 
 TEST(Bounce, RestitutionOnTheNormalFrictionOnTheTangent) {
   const Eigen::Vector3d n = Eigen::Vector3d::UnitZ();
