@@ -10,7 +10,9 @@ namespace olympics::sports {
 #define OLYMPICS_SPORTS(X) \
   X(sandbox)               \
   X(tennis)                \
-  X(table_tennis)
+  X(table_tennis)          \
+  X(fencing)               \
+  X(boxing)
 
 #define OLYMPICS_DECLARE_SPORT(name) std::unique_ptr<Sport> make_##name();
 OLYMPICS_SPORTS(OLYMPICS_DECLARE_SPORT)

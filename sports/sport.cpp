@@ -1,6 +1,8 @@
 #include "sport.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace olympics::sports {
@@ -68,6 +70,40 @@ std::vector<std::string> Layout::reward_names() const {
   return names;
 }
 
+SettingSpec SettingSpec::number(std::string key, nlohmann::json value, std::string meaning,
+                               double min, double max) {
+  SettingSpec s;
+  s.key = std::move(key), s.default_value = std::move(value), s.meaning = std::move(meaning);
+  s.min = min, s.max = max;
+  return s;
+}
+
+SettingSpec SettingSpec::choice(std::string key, std::string value, std::string meaning,
+                               std::vector<std::string> choices) {
+  SettingSpec s;
+  s.key = std::move(key), s.default_value = std::move(value), s.meaning = std::move(meaning);
+  s.choices = std::move(choices);
+  return s;
+}
+
+std::string SettingSpec::allowed() const {
+  if (!choices.empty()) {
+    std::string text;
+    for (size_t i = 0; i < choices.size(); ++i)
+      text += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + ("\"" + choices[i] + "\"");
+    return text;
+  }
+  auto number = [](double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", x);
+    return std::string(text);
+  };
+  if (min && max) return number(*min) + ".." + number(*max);
+  if (min) return ">= " + number(*min);
+  if (max) return "<= " + number(*max);
+  return default_value.type_name();
+}
+
 nlohmann::json merge_settings(const std::string& sport, const std::vector<SettingSpec>& specs,
                               const nlohmann::json& options) {
   nlohmann::json merged = nlohmann::json::object();
@@ -80,14 +116,29 @@ nlohmann::json merge_settings(const std::string& sport, const std::vector<Settin
   if (options.is_null()) return merged;  // no options given: the defaults
   if (!options.is_object()) throw std::invalid_argument(sport + ": settings must be a JSON object");
   for (const auto& [key, value] : options.items()) {
-    if (!merged.contains(key))
+    const auto spec = std::find_if(specs.begin(), specs.end(),
+                                   [&](const SettingSpec& s) { return s.key == key; });
+    if (spec == specs.end())
       throw std::invalid_argument(sport + " has no setting \"" + key +
                                   "\"; its settings: " + known);
-    const auto& def = merged[key];
+    const auto& def = spec->default_value;
+    auto refuse = [&](const std::string& what) {
+      throw std::invalid_argument(sport + " setting \"" + key + "\" must be " + what + ", got " +
+                                  value.dump());
+    };
     const bool both_numbers = def.is_number() && value.is_number();
     if (!both_numbers && def.type() != value.type())
-      throw std::invalid_argument(sport + " setting \"" + key + "\" must be a " + def.type_name() +
-                                  " like " + def.dump() + ", got " + value.dump());
+      refuse(std::string("a ") + def.type_name() + " like " + def.dump());
+    if (value.is_number()) {
+      const double x = value.get<double>();
+      if (!std::isfinite(x)) refuse("a finite number");
+      if (def.is_number_integer() && x != std::floor(x)) refuse("a whole number");
+      if ((spec->min && x < *spec->min) || (spec->max && x > *spec->max)) refuse(spec->allowed());
+    }
+    if (value.is_string() && !spec->choices.empty() &&
+        std::find(spec->choices.begin(), spec->choices.end(), value.get<std::string>()) ==
+            spec->choices.end())
+      refuse(spec->allowed());
     merged[key] = value;
   }
   return merged;

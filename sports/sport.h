@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -109,16 +110,25 @@ struct Layout {
   std::vector<std::string> reward_names() const;
 };
 
-// A sport's settings: each key with its default and what it means, for `describe` and for
-// refusing unknown keys.
+// A sport's settings: each key with its default, what it means, and what values it takes, for
+// `describe` and for refusing what would break a match.
 struct SettingSpec {
   std::string key;
   nlohmann::json default_value;
   std::string meaning;
+  std::optional<double> min, max;    // a number: its allowed range (an integer default: integers)
+  std::vector<std::string> choices;  // a string: its allowed values
+  std::string allowed() const;       // "1..45", "\"torso\" or \"whole_body\"", ...
+
+  static SettingSpec number(std::string key, nlohmann::json value, std::string meaning, double min,
+                            double max);
+  static SettingSpec choice(std::string key, std::string value, std::string meaning,
+                            std::vector<std::string> choices);
 };
 
-// Returns `options` over the defaults; throws std::invalid_argument naming the sport's settings
-// when a key is unknown or a value has another JSON type than its default.
+// Returns `options` over the defaults; throws std::invalid_argument naming the setting and what
+// it takes when a key is unknown, a value has another JSON type than its default, a number is
+// out of range (or not whole where the default is) or a string is not one of the choices.
 nlohmann::json merge_settings(const std::string& sport, const std::vector<SettingSpec>& specs,
                               const nlohmann::json& options);
 

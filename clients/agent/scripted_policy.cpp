@@ -2,15 +2,23 @@
 
 #include <stdexcept>
 
+#include "scripted_boxing.h"
+#include "scripted_fencing.h"
 #include "scripted_racket.h"
 
 namespace olympics::client {
 
-std::vector<std::string> ScriptedPolicy::sports() { return {"tennis", "table_tennis"}; }
+std::vector<std::string> ScriptedPolicy::sports() {
+  return {"tennis", "table_tennis", "fencing", "boxing"};
+}
 
 void ScriptedPolicy::start(const MatchInfo& match) {
   if (match.sport == "tennis" || match.sport == "table_tennis")
     sport_policy_ = std::make_unique<ScriptedRacketPolicy>();
+  else if (match.sport == "fencing")
+    sport_policy_ = std::make_unique<ScriptedFencingPolicy>();
+  else if (match.sport == "boxing")
+    sport_policy_ = std::make_unique<ScriptedBoxingPolicy>();
   else {
     std::string known;
     for (const auto& s : sports()) known += (known.empty() ? "" : ", ") + s;

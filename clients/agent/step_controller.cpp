@@ -75,14 +75,17 @@ void StepController::act(std::span<const float> o, const Eigen::Vector2d& target
 
   const double ground = -o[0];  // the floor, root-relative
   if (!stepping_) {
-    if (distance < g.start_m) return stand(o, a);
+    const bool must_turn = g.turn_start > 0 && std::abs(turn) > g.turn_start;
+    if (distance < g.start_m && !must_turn) return stand(o, a);
     stepping_ = true;
     begin_step(o, target.y() > 0);
   } else if (phase_s_ >= g.step_s) {
     auto down = [&](int ankle) {
       return body_position(o, ankle).z() < ground + kAnkleHeight + 0.02;
     };
-    if (down(kLAnkle) && down(kRAnkle) && distance < g.arrive_m && v.norm() < g.settle_speed) {
+    const bool turned = g.turn_start <= 0 || std::abs(turn) < 0.5 * g.turn_start;
+    if (down(kLAnkle) && down(kRAnkle) && distance < g.arrive_m && v.norm() < g.settle_speed &&
+        turned) {
       stepping_ = false;
       return stand(o, a);
     }

@@ -42,6 +42,9 @@ struct StepGains {
   double start_m = 0.3;          // standing, it starts to step when the target is this far
   double arrive_m = 0.12;        // closer than this and slower than...
   double settle_speed = 0.25;    // ...this, it stands still
+  // Standing, it also steps (in place) to turn when asked to turn more than this; it stands
+  // again once the turn left is under half of it. 0: it turns only while walking somewhere.
+  double turn_start = 0;
 };
 
 class StepController {

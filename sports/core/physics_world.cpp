@@ -1,5 +1,6 @@
 #include "core/physics_world.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -41,6 +42,41 @@ PhysicsWorld::~PhysicsWorld() {
 int PhysicsWorld::add_entity(SelfCollisionFilter filter) {
   entity_filters_.push_back(std::move(filter));
   return static_cast<int>(entity_filters_.size()) - 1;
+}
+
+namespace {
+
+GeomTag* arena_tag(std::vector<std::unique_ptr<GeomTag>>& tags, double friction,
+                   double restitution) {
+  auto tag = std::make_unique<GeomTag>();
+  tag->friction = friction;
+  tag->restitution = restitution;
+  tags.push_back(std::move(tag));
+  return tags.back().get();
+}
+
+}  // namespace
+
+dGeomID PhysicsWorld::add_static_capsule(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                         double radius, double friction, double restitution) {
+  const Eigen::Vector3d axis = b - a;
+  dGeomID g = dCreateCapsule(space_, radius, axis.norm());
+  const Eigen::Vector3d centre = 0.5 * (a + b);
+  dGeomSetPosition(g, centre.x(), centre.y(), centre.z());
+  // A capsule lies along its local z.
+  const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), axis);
+  const dQuaternion oq = {q.w(), q.x(), q.y(), q.z()};
+  dGeomSetQuaternion(g, oq);
+  dGeomSetData(g, arena_tag(static_tags_, friction, restitution));
+  return g;
+}
+
+dGeomID PhysicsWorld::add_static_box(const Eigen::Vector3d& centre, const Eigen::Vector3d& half,
+                                     double friction, double restitution) {
+  dGeomID g = dCreateBox(space_, 2 * half.x(), 2 * half.y(), 2 * half.z());
+  dGeomSetPosition(g, centre.x(), centre.y(), centre.z());
+  dGeomSetData(g, arena_tag(static_tags_, friction, restitution));
+  return g;
 }
 
 void PhysicsWorld::step(double dt) {

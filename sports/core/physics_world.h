@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace olympics::core {
@@ -67,6 +68,13 @@ class PhysicsWorld {
   using SelfCollisionFilter = std::function<bool(int body_a, int body_b)>;
   int add_entity(SelfCollisionFilter filter);
 
+  // Arena geometry that does not move (ropes, posts, goals): a capsule from `a` to `b`, a box
+  // at `centre` with half-extents `half` (axis-aligned). Tagged as the arena (entity -1).
+  dGeomID add_static_capsule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double radius,
+                             double friction, double restitution);
+  dGeomID add_static_box(const Eigen::Vector3d& centre, const Eigen::Vector3d& half,
+                         double friction, double restitution);
+
   // Collide, solve one QuickStep of dt seconds, drop the contacts.
   void step(double dt);
   int last_contact_count() const { return last_contact_count_; }
@@ -97,6 +105,7 @@ class PhysicsWorld {
   dGeomID ground_ = nullptr;
   dThreadingImplementationID threading_ = nullptr;
   std::vector<SelfCollisionFilter> entity_filters_;
+  std::vector<std::unique_ptr<GeomTag>> static_tags_;
   int last_contact_count_ = 0;
   int last_inter_entity_contacts_ = 0;
   std::deque<dJointFeedback> feedback_;  // deque: ODE keeps pointers to its elements

@@ -26,6 +26,7 @@ SmplMatch::SmplMatch(const ModeSpec& mode, Layout layout, const MatchSettings& s
   outcome_.truncated.assign(n, 0);
   outcome_.scores.assign(mode_.team_count(), 0.0f);
   down_.assign(n, 0);
+  clear_ticks_.assign(n, 0);
 }
 
 void SmplMatch::add_player(const core::ModelSpec& spec, const core::RootPlacement& placement,
@@ -40,6 +41,7 @@ void SmplMatch::reset_player(int slot, const core::RootPlacement& placement) {
   scene_.humanoid(slot).reset(placement);
   falls_[slot].reset();
   down_[slot] = 0;
+  clear_ticks_[slot] = 0;
 }
 
 void SmplMatch::observe(int slot, std::span<float> out) const {
@@ -55,6 +57,9 @@ void SmplMatch::step(const std::vector<std::span<const float>>& actions) {
   if (scene_.humanoid_count() != slot_count())
     throw std::logic_error("a match stepped before every slot has its player");
   for (int i = 0; i < slot_count(); ++i) scene_.set_action(i, actions[i]);
+  // The tick's log opens before its physics: calls are made at the physics rate.
+  events_.begin_tick(tick_ + 1);
+  outcome_.info = nlohmann::json::object();
   const double h = scene_.settings().physics_dt();
   for (int s = 0; s < scene_.settings().substeps; ++s) {
     before_physics_step();
@@ -64,13 +69,17 @@ void SmplMatch::step(const std::vector<std::span<const float>>& actions) {
     after_physics_step(step_start);
   }
   ++tick_;
-  events_.begin_tick(tick_);
-  outcome_.info = nlohmann::json::object();
 
   fell_.clear();
+  const int up_after = static_cast<int>(std::lround(kUpAfterS / scene_.settings().control_dt));
   for (int i = 0; i < slot_count(); ++i) {
     const bool was_down = down_[i] != 0;
-    down_[i] = falls_[i].fallen(scene_.humanoid(i)) ? 1 : 0;
+    if (falls_[i].fallen(scene_.humanoid(i))) {
+      down_[i] = 1;
+      clear_ticks_[i] = 0;
+    } else if (was_down && ++clear_ticks_[i] >= up_after) {
+      down_[i] = 0;
+    }
     if (down_[i] && !was_down) {
       fell_.push_back(i);
       nlohmann::json e = referee_event("fall", time_, i);

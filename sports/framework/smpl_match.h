@@ -79,7 +79,8 @@ class SmplMatch : public SportMatch {
   const ModeSpec& mode() const { return mode_; }
   const std::vector<int>& teams() const { return mode_.slot_teams; }
   double time() const { return time_; }  // seconds simulated
-  // Falls this tick: is the slot down (a body other than its feet on the ground, or too low),
+  // Falls: is the slot down (a body other than its feet on the ground, or too low; it stays
+  // down until it has been clear for kUpAfterS, so a body lying on the ground is one fall),
   // and which slots went down this tick.
   bool down(int slot) const { return down_[slot] != 0; }
   const std::vector<int>& fell_this_tick() const { return fell_; }
@@ -88,6 +89,7 @@ class SmplMatch : public SportMatch {
   void set_reward(int slot, std::span<const float> terms);
   void log(nlohmann::json event) { events_.add(std::move(event), time_); }
   const nlohmann::json& events() const { return events_.events(); }
+  static constexpr double kUpAfterS = 0.5;
   int time_limit_ticks() const { return time_limit_ticks_; }
   bool time_up() const { return tick_ >= time_limit_ticks_; }
   // Ends the match at the time limit: every slot still playing is truncated.
@@ -105,6 +107,7 @@ class SmplMatch : public SportMatch {
   core::HumanoidScene scene_;
   std::vector<core::FallDetector> falls_;
   std::vector<std::uint8_t> down_;
+  std::vector<int> clear_ticks_;  // per slot, while down: ticks in a row the detector was clear
   std::vector<int> fell_;
   EventLog events_;
   int time_limit_ticks_;

@@ -3,10 +3,10 @@
 namespace olympics::sports {
 
 TouchSensor::TouchSensor(std::vector<int> slot_entities, std::vector<int> slot_teams,
-                         std::vector<bool> targets, double min_force_n, double refractory_s)
+                         TargetTest is_target, double min_force_n, double refractory_s)
     : slot_entities_(std::move(slot_entities)),
       slot_teams_(std::move(slot_teams)),
-      targets_(std::move(targets)),
+      is_target_(std::move(is_target)),
       min_force_n_(min_force_n),
       refractory_s_(refractory_s) {}
 
@@ -23,7 +23,7 @@ std::vector<Touch> TouchSensor::collect(const core::PhysicsWorld& world, double 
     const int attacker = slot_of(c.sensor->entity), defender = slot_of(c.other->entity);
     if (attacker < 0 || defender < 0 || slot_teams_[attacker] == slot_teams_[defender]) continue;
     const int body = c.other->body;
-    if (body < 0 || body >= static_cast<int>(targets_.size()) || !targets_[body]) continue;
+    if (!is_target_(body, c.other->geom)) continue;
     const auto key = std::make_tuple(attacker, c.sensor->body, c.sensor->geom);
     auto& best = strongest[key];
     if (best.attacker >= 0 && best.force >= c.normal_force) continue;

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <map>
 #include <tuple>
 #include <vector>
@@ -29,9 +30,11 @@ struct Touch {
 
 class TouchSensor {
  public:
-  // slot_entities: each slot's humanoid entity; targets: per body index, whether it is a target.
-  TouchSensor(std::vector<int> slot_entities, std::vector<int> slot_teams,
-              std::vector<bool> targets, double min_force_n, double refractory_s);
+  // Whether a geom (by body index and its index in the body's geoms) of a player is a target.
+  using TargetTest = std::function<bool(int body, int geom)>;
+  // slot_entities: each slot's humanoid entity.
+  TouchSensor(std::vector<int> slot_entities, std::vector<int> slot_teams, TargetTest is_target,
+              double min_force_n, double refractory_s);
 
   // The touches of the physics step that just ended at `time`.
   std::vector<Touch> collect(const core::PhysicsWorld& world, double time);
@@ -43,7 +46,7 @@ class TouchSensor {
   int slot_of(int entity) const;
 
   std::vector<int> slot_entities_, slot_teams_;
-  std::vector<bool> targets_;
+  TargetTest is_target_;
   double min_force_n_, refractory_s_;
   std::map<std::tuple<int, int, int>, double> last_touch_;  // (slot, body, geom) -> time
 };

@@ -10,14 +10,6 @@ RacketMode racket_mode(const std::string& mode) {
   return mode == "1v1" ? RacketMode::Singles : RacketMode::Doubles;
 }
 
-int positive(const nlohmann::json& s, const char* key, int most) {
-  const int v = s.at(key).get<int>();
-  if (v < 1 || v > most)
-    throw std::invalid_argument(std::string("setting \"") + key + "\" must be 1.." +
-                                std::to_string(most));
-  return v;
-}
-
 }  // namespace
 
 RacketSport::RacketSport(bool table_tennis)
@@ -32,16 +24,22 @@ std::string RacketSport::summary() const {
 }
 
 std::vector<SettingSpec> RacketSport::settings() const {
+  const auto stall = SettingSpec::number(
+      "max_rally_s", 10.0, "no stroke for this long: the side to play loses the point", 1, 60);
   if (table_tennis_)
-    return {{"games_to_win", 1, "games that win the match (best of 2n-1)"},
-            {"points_per_game", 11, "points that win a game, by 2"},
-            {"max_rally_s", 10.0, "no stroke for this long: the side to play loses the point"}};
-  return {{"net_height", 1.0, "m; the seed's 1.0 (a real net is 0.914 at the centre)"},
-          {"format", "sets", "\"sets\", or \"tiebreak\": every set is one tie-break game"},
-          {"sets_to_win", 1, "sets that win the match (best of 2n-1)"},
-          {"games_per_set", 6, "games that win a set, by 2; a tie-break at n-n"},
-          {"tiebreak_points", 7, "points that win a tie-break game, by 2"},
-          {"max_rally_s", 10.0, "no stroke for this long: the side to play loses the point"}};
+    return {SettingSpec::number("games_to_win", 1, "games that win the match (best of 2n-1)", 1, 4),
+            SettingSpec::number("points_per_game", 11, "points that win a game, by 2", 1, 21),
+            stall};
+  return {SettingSpec::number("net_height", 1.0,
+                              "m; the seed's 1.0 (a real net is 0.914 at the centre)", 0.5, 1.5),
+          SettingSpec::choice("format", "sets", "\"tiebreak\": every set is one tie-break game",
+                              {"sets", "tiebreak"}),
+          SettingSpec::number("sets_to_win", 1, "sets that win the match (best of 2n-1)", 1, 3),
+          SettingSpec::number("games_per_set", 6, "games that win a set, by 2; tie-break at n-n",
+                              1, 6),
+          SettingSpec::number("tiebreak_points", 7, "points that win a tie-break game, by 2", 1,
+                              10),
+          stall};
 }
 
 RacketMatchConfig RacketSport::config(const std::string& mode,
@@ -50,26 +48,17 @@ RacketMatchConfig RacketSport::config(const std::string& mode,
   RacketMatchConfig c;
   c.mode = racket_mode(modes_.at(mode).name);
   c.max_rally_s = s.at("max_rally_s").get<double>();
-  if (!(c.max_rally_s >= 1 && c.max_rally_s <= 60))
-    throw std::invalid_argument("setting \"max_rally_s\" must be 1..60 seconds");
   if (table_tennis_) {
     c.game = table_tennis_game();
-    c.table_tennis.games_to_win = positive(s, "games_to_win", 4);
-    c.table_tennis.points_per_game = positive(s, "points_per_game", 21);
+    c.table_tennis.games_to_win = s.at("games_to_win");
+    c.table_tennis.points_per_game = s.at("points_per_game");
     return c;
   }
-  const double net = s.at("net_height").get<double>();
-  if (!(net >= 0.5 && net <= 1.5))
-    throw std::invalid_argument("setting \"net_height\" must be 0.5..1.5 m");
-  c.game = tennis_game(net);
-  const std::string format = s.at("format");
-  if (format != "sets" && format != "tiebreak")
-    throw std::invalid_argument("setting \"format\" must be \"sets\" or \"tiebreak\", got \"" +
-                                format + "\"");
-  c.tennis.tiebreak_only = format == "tiebreak";
-  c.tennis.sets_to_win = positive(s, "sets_to_win", 3);
-  c.tennis.games_per_set = positive(s, "games_per_set", 6);
-  c.tennis.tiebreak_points = positive(s, "tiebreak_points", 10);
+  c.game = tennis_game(s.at("net_height").get<double>());
+  c.tennis.tiebreak_only = s.at("format") == "tiebreak";
+  c.tennis.sets_to_win = s.at("sets_to_win");
+  c.tennis.games_per_set = s.at("games_per_set");
+  c.tennis.tiebreak_points = s.at("tiebreak_points");
   return c;
 }
 

@@ -173,6 +173,25 @@ TEST_P(Conformance, UnknownSettingsAndModesAreRefusedByName) {
         s.default_value.is_string() ? nlohmann::json(12.5) : nlohmann::json("twelve");
     EXPECT_THROW(make(1, 2.0, {{s.key, wrong}}), std::invalid_argument) << s.key;
   }
+  for (const auto& s : sport().settings()) {  // outside the range or the choices it declares
+    if (s.min) {
+      EXPECT_THROW(make(1, 2.0, {{s.key, *s.min - 1}}), std::invalid_argument) << s.key;
+    }
+    if (s.max) {
+      EXPECT_THROW(make(1, 2.0, {{s.key, *s.max + 1}}), std::invalid_argument) << s.key;
+    }
+    if (!s.choices.empty()) {
+      EXPECT_THROW(make(1, 2.0, {{s.key, "no_such_choice"}}), std::invalid_argument) << s.key;
+    }
+    if (s.default_value.is_number_integer()) {
+      EXPECT_THROW(make(1, 2.0, {{s.key, s.default_value.get<double>() + 0.5}}),
+                   std::invalid_argument)
+          << s.key << " takes whole numbers";
+    }
+    if (s.default_value.is_number()) {
+      EXPECT_TRUE(s.min && s.max) << s.key << ": a number setting declares its range";
+    }
+  }
   nlohmann::json defaults = nlohmann::json::object();
   for (const auto& s : sport().settings()) defaults[s.key] = s.default_value;
   EXPECT_NO_THROW(make(1, 2.0, defaults)) << "every default is a valid setting";

@@ -1,0 +1,33 @@
+// The scripted baseline for boxing: the yardstick learned boxers must beat. It reads only the
+// observation (blocks by name):
+//
+// - it faces the opponent and walks (StepController) to punching range;
+// - it holds a guard: upper arms forward and down, elbows bent, gloves up before the chin;
+// - in range it punches: left jab and right cross in turn, each arm thrown straight at the
+//   opponent's head or chest and drawn back to the guard;
+// - it stands still during the rest between rounds.
+#pragma once
+
+#include <optional>
+
+#include "policies.h"
+#include "step_controller.h"
+
+namespace olympics::client {
+
+class ScriptedBoxingPolicy : public Policy {
+ public:
+  void start(const MatchInfo& match) override;
+  void act(std::span<const float> observation, std::span<float> action) override;
+
+ private:
+  struct Blocks {
+    int opponent_root = 0, opponent_targets = 0, bout = 0;
+  };
+  Blocks blocks_;
+  double control_dt_ = 0;
+  std::optional<StepController> legs_;
+  double clock_s_ = 0;  // time in range, for the punches' rhythm
+};
+
+}  // namespace olympics::client

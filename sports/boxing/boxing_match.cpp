@@ -1,0 +1,211 @@
+#include "boxing/boxing_match.h"
+
+#include <cmath>
+
+#include "boxing/gloves.h"
+#include "combat/combat_observation.h"
+#include "combat/combat_rewards.h"
+#include "core/humanoid_assets.h"
+
+namespace olympics::sports::boxing {
+namespace {
+
+const core::ModelSpec& boxer(bool both_gloves) {
+  auto build = [](bool both) {
+    core::ModelSpec s = core::load_humanoid(core::HumanoidKind::Smpl);
+    for (const char* hand : {"L_Hand", "R_Hand"}) {
+      if (!both && std::string(hand) == "L_Hand") continue;
+      const int b = s.body_index(hand);
+      equipment::attach_equipment(s, glove(hand, glove_centre(s, b)));
+    }
+    return s;
+  };
+  static const core::ModelSpec two = build(true), one = build(false);
+  return both_gloves ? two : one;
+}
+
+double tenths(double x) { return std::round(x * 10) / 10; }
+
+// A punch to the back does not score: the contact's normal (from the target towards the glove)
+// points within 60 degrees of straight behind the defender.
+bool from_front_or_side(const Touch& t, const core::BodyState& defender_root) {
+  Eigen::Vector3d forward = defender_root.orientation * Eigen::Vector3d::UnitX();
+  Eigen::Vector3d n = t.normal;
+  forward.z() = 0, n.z() = 0;
+  if (n.norm() < 1e-6 || forward.norm() < 1e-6) return true;  // from above or below
+  return n.normalized().dot(forward.normalized()) >= -0.5;
+}
+
+}  // namespace
+
+double bout_length_s(const BoxingRules& r) {
+  return r.rounds * r.round_s + (r.rounds - 1) * r.rest_s + 5;
+}
+
+std::vector<LayoutBlock> boxing_task_layout() {
+  std::vector<LayoutBlock> blocks = combat::opponent_blocks();
+  blocks.push_back({"gloves", 12, "m, m/s",
+                    "my left then right glove (a bare hand when not gloved): position relative "
+                    "to the root (3), velocity (3), heading frame"});
+  blocks.push_back({"opponent_gloves", 12, "m, m/s", "the opponent's gloves, likewise"});
+  blocks.push_back({"ring", 6, "m",
+                    "root x, y in the ring from my side (towards the opponent's side, left), "
+                    "distances to the ropes ahead, behind, left and right"});
+  blocks.push_back({"bout", 7, "count, fraction, flag, count, count, s, s",
+                    "round, share of the round (or rest) left, resting, my and the opponent's "
+                    "scoring punches this round, how long I and the opponent have been down"});
+  return blocks;
+}
+
+std::vector<RefereeCall> boxing_calls() {
+  return {{"punch", "a scoring punch (slot, target_slot, body, glove, force_n)"},
+          {"knockdown", "a boxer is down during a round: the count starts (slot)"},
+          {"up", "the boxer beat the count (slot)"},
+          {"knockout", "not up before the count's end: the bout is over (slot)"},
+          {"round_end", "the bell: the round's card (round, card_0, card_1)"},
+          {"round_start", "the bell after the rest (round)"},
+          {"fall", "a boxer fell (body)"}};
+}
+
+BoxingMatch::BoxingMatch(const BoxingConfig& config, const ModeSpec& mode, Layout layout,
+                         const MatchSettings& settings)
+    : SmplMatch(mode, std::move(layout), settings),
+      config_(config),
+      rng_(settings.seed),
+      referee_(config.rules) {
+  const core::ModelSpec& spec = boxer(config_.both_gloves);
+  hands_ = {spec.body_index("L_Hand"), spec.body_index("R_Hand")};
+  for (int h = 0; h < 2; ++h) glove_centre_[h] = glove_centre(spec, hands_[h]);
+  targets_ = combat::target_body_indices(spec);
+  for (int b = 0; b < 2; ++b) add_player(spec, corner(b));
+  config_.ring.build(scene().world());
+  std::vector<bool> is_target(spec.bodies.size(), false);
+  for (int b : targets_) is_target[b] = true;
+  touches_.emplace(
+      std::vector<int>{player(0).entity(), player(1).entity()}, teams(),
+      [is_target](int body, int) { return is_target[body]; }, config_.punch_force_n,
+      config_.punch_refractory_s);
+}
+
+core::RootPlacement BoxingMatch::corner(int b) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  const double along = u(rng_), across = u(rng_), turn = u(rng_);
+  return config_.ring.start_placement(b, {along, across, turn});
+}
+
+Eigen::Vector3d BoxingMatch::glove_position(int slot, int hand) const {
+  return combat::point_on_body(player(slot).body_state(hands_[hand]), glove_centre_[hand]).position;
+}
+
+void BoxingMatch::after_physics_step(double) {
+  for (const Touch& t : touches_->collect(scene().world(), time())) {
+    // A glove: the striking geom is on a hand body.
+    if (t.striker_body != hands_[0] && t.striker_body != hands_[1]) continue;
+    if (!referee_.in_round() || referee_.counting(0) || referee_.counting(1)) continue;
+    if (down(t.attacker) || down(t.defender)) continue;
+    if (!from_front_or_side(t, player(t.defender).body_state(0))) continue;
+    nlohmann::json punch = referee_event("punch", time(), t.attacker);
+    punch["target_slot"] = t.defender;
+    punch["body"] = player(t.defender).spec().bodies[t.target_body].name;
+    punch["glove"] = t.striker_body == hands_[0] ? "left" : "right";
+    punch["force_n"] = tenths(t.force);
+    log(std::move(punch));
+    referee_.punch(teams()[t.attacker], time());
+    scored_this_tick_[teams()[t.attacker]] = true;
+  }
+}
+
+void BoxingMatch::settle_tick() {
+  referee_.update(time(), {down(0), down(1)});
+  for (int b = 0; b < 2; ++b) {
+    combat::CombatRewardInput in;
+    in.root = player(b).body_state(0);
+    in.opponent_root = player(1 - b).body_state(0).position;
+    for (int h = 0; h < 2; ++h)
+      if (config_.both_gloves || h == 1) in.strikers.push_back(glove_position(b, h));
+    for (int t : targets_) in.targets.push_back(player(1 - b).body_state(t).position);
+    in.scored = scored_this_tick_[b];
+    set_reward(b, combat::combat_reward_terms(in));
+  }
+  scored_this_tick_ = {false, false};
+  log_calls();
+  const auto totals = referee_.totals();
+  outcome_.scores = {static_cast<float>(totals[0]), static_cast<float>(totals[1])};
+  outcome_.info["score"] = score_json();
+  if (referee_.over()) {
+    outcome_.info["rounds"] = rounds_;
+    outcome_.end(referee_.reason(), referee_.winner());
+  }
+}
+
+void BoxingMatch::log_calls() {
+  for (const BoutCall& c : referee_.take_calls()) {
+    nlohmann::json e = referee_event(c.call, c.time, c.boxer);
+    if (c.call == "round_end" || c.call == "round_start") e["round"] = c.round;
+    if (c.call == "round_end") {
+      e["card_0"] = c.card[0], e["card_1"] = c.card[1];
+      rounds_.push_back({{"round", c.round}, {"card", {c.card[0], c.card[1]}}, {"tick", tick()}});
+    }
+    log(std::move(e));
+    // The bell: both boxers go to their corners, for the rest and again for the next round.
+    if ((c.call == "round_end" && !referee_.over()) || c.call == "round_start") back_to_corners();
+  }
+}
+
+void BoxingMatch::back_to_corners() {
+  for (int b = 0; b < 2; ++b) reset_player(b, corner(b));
+  touches_->reset();
+}
+
+nlohmann::json BoxingMatch::score_json() const {
+  const auto t = referee_.totals();
+  const auto& p = referee_.punches();
+  const auto& k = referee_.knockdowns();
+  return {{"round", referee_.round()},
+          {"cards", {t[0], t[1]}},
+          {"punches", {p[0], p[1]}},
+          {"knockdowns", {k[0], k[1]}},
+          {"text", "round " + std::to_string(referee_.round()) + ", cards " + std::to_string(t[0]) +
+                       "-" + std::to_string(t[1]) + ", punches " + std::to_string(p[0]) + "-" +
+                       std::to_string(p[1])}};
+}
+
+void BoxingMatch::on_time_limit() {
+  referee_.decide_now(time());
+  log_calls();
+  const auto totals = referee_.totals();
+  outcome_.scores = {static_cast<float>(totals[0]), static_cast<float>(totals[1])};
+  outcome_.info["score"] = score_json();
+  outcome_.info["rounds"] = rounds_;
+  end_by_time_limit(referee_.winner());
+}
+
+void BoxingMatch::write_task_observation(int slot, const HeadingFrame& frame,
+                                         ObservationWriter& out) const {
+  const int other = 1 - slot;
+  combat::write_opponent_blocks(frame, player(other), targets_, out);
+  for (const auto& [block, who] :
+       {std::pair{"gloves", slot}, std::pair{"opponent_gloves", other}}) {
+    out.begin(block);
+    for (int h = 0; h < 2; ++h) {
+      const auto g = combat::point_on_body(player(who).body_state(hands_[h]), glove_centre_[h]);
+      out.put(frame.point(g.position)).put(frame.vector(g.velocity));
+    }
+  }
+  const double side = -Ring::side(slot);  // +1: my side is -x
+  const double x = frame.root.position.x() * side, y = frame.root.position.y() * side;
+  const double half = config_.ring.half();
+  out.begin("ring").put(x).put(y).put(half - x).put(half + x).put(half - y).put(half + y);
+  const auto& p = referee_.punches_this_round();
+  const double length = referee_.resting() ? config_.rules.rest_s : config_.rules.round_s;
+  out.begin("bout")
+      .put(referee_.round())
+      .put(length > 0 ? referee_.phase_time_left(time()) / length : 0.0)
+      .put(referee_.resting() ? 1.0 : 0.0)
+      .put(p[slot])
+      .put(p[other])
+      .put(referee_.down_for(slot, time()))
+      .put(referee_.down_for(other, time()));
+}
+
+}  // namespace olympics::sports::boxing

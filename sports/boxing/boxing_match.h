@@ -1,0 +1,63 @@
+// A boxing bout (1v1): two SMPL boxers with gloves in a roped ring. Scoring punches are found at
+// the physics rate from the gloves' contacts (TouchSensor) and filtered (a target body, front or
+// side, nobody down); the BoxingReferee runs rounds, counts and cards. Rewards: the seed's
+// eq. 9-10 with the nearer glove as the striker (combat_rewards.h).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <random>
+
+#include "boxing/boxing_referee.h"
+#include "boxing/ring.h"
+#include "framework/smpl_match.h"
+#include "framework/touch_sensor.h"
+
+namespace olympics::sports::boxing {
+
+struct BoxingConfig {
+  BoxingRules rules;
+  Ring ring;
+  bool both_gloves = true;          // false: the seed's right glove only
+  double punch_force_n = 100;       // a glove's contact force that scores
+  double punch_refractory_s = 0.3;  // one glove scores at most this often
+};
+
+std::vector<LayoutBlock> boxing_task_layout();
+std::vector<RefereeCall> boxing_calls();
+// The time a whole bout takes: every round and rest, and a few seconds to spare.
+double bout_length_s(const BoxingRules& rules);
+
+class BoxingMatch : public SmplMatch {
+ public:
+  BoxingMatch(const BoxingConfig& config, const ModeSpec& mode, Layout layout,
+              const MatchSettings& settings);
+
+  const BoxingReferee& referee() const { return referee_; }
+  // Where a boxer's glove is (or its bare hand, when not gloved), in the world.
+  Eigen::Vector3d glove_position(int slot, int hand) const;  // hand 0 left, 1 right
+
+ private:
+  void write_task_observation(int slot, const HeadingFrame& frame,
+                              ObservationWriter& out) const override;
+  void after_physics_step(double step_start) override;
+  void settle_tick() override;
+  void on_time_limit() override;
+
+  void log_calls();
+  void back_to_corners();
+  core::RootPlacement corner(int boxer);
+  nlohmann::json score_json() const;
+
+  BoxingConfig config_;
+  std::mt19937_64 rng_;
+  std::array<int, 2> hands_{};                   // L_Hand, R_Hand
+  std::array<Eigen::Vector3d, 2> glove_centre_;  // in each hand's frame
+  std::vector<int> targets_;
+  BoxingReferee referee_;
+  std::optional<TouchSensor> touches_;
+  std::array<bool, 2> scored_this_tick_{};
+  nlohmann::json rounds_ = nlohmann::json::array();  // every round's card, for the result
+};
+
+}  // namespace olympics::sports::boxing

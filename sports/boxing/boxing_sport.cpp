@@ -1,0 +1,62 @@
+#include "boxing/boxing_sport.h"
+
+#include "combat/combat_rewards.h"
+
+namespace olympics::sports::boxing {
+
+BoxingSport::BoxingSport() : modes_("boxing", {{"1v1", {0, 1}, "a bout between two boxers"}}) {}
+
+std::vector<SettingSpec> BoxingSport::settings() const {
+  return {
+      SettingSpec::number("ring_size", 5.0, "m inside the ropes (the seed's 5; real 4.9-6.1)", 3,
+                          8),
+      SettingSpec::choice("gloves", "both", "both hands gloved, or the seed's \"right\" only",
+                          {"both", "right"}),
+      SettingSpec::number("punch_force_n", 100.0, "N: a glove's contact force that scores", 1,
+                          5000),
+      SettingSpec::number("punch_refractory_s", 0.3, "s: one glove scores at most this often", 0.05,
+                          2),
+      SettingSpec::number("rounds", 3, "rounds in the bout", 1, 12),
+      SettingSpec::number("round_s", 60.0, "s a round lasts (real: 180, amateur 120-180)", 5, 300),
+      SettingSpec::number("rest_s", 10.0, "s of rest between rounds (real: 60)", 0, 120),
+      SettingSpec::number("count_s", 10.0, "s a knocked-down boxer has to get up", 1, 30),
+  };
+}
+
+BoxingConfig BoxingSport::config(const nlohmann::json& options) const {
+  const nlohmann::json s = merge_settings(name(), settings(), options);
+  BoxingConfig c;
+  c.ring.size = s.at("ring_size");
+  c.both_gloves = s.at("gloves") == "both";
+  c.punch_force_n = s.at("punch_force_n");
+  c.punch_refractory_s = s.at("punch_refractory_s");
+  c.rules.rounds = s.at("rounds");
+  c.rules.round_s = s.at("round_s");
+  c.rules.rest_s = s.at("rest_s");
+  c.rules.count_s = s.at("count_s");
+  return c;
+}
+
+std::unique_ptr<SportMatch> BoxingSport::create(const MatchSettings& settings) const {
+  MatchSettings s = settings;
+  const BoxingConfig c = config(s.options);
+  if (s.time_limit_s <= 0) s.time_limit_s = bout_length_s(c.rules);
+  return std::make_unique<BoxingMatch>(c, modes_.at(s.mode), layout(s.mode), s);
+}
+
+Layout BoxingSport::layout(const std::string& mode) const {
+  modes_.at(mode);
+  Layout l;
+  l.observation = {smpl_self_observation_block()};
+  for (auto& b : boxing_task_layout()) l.observation.push_back(b);
+  l.action = {smpl_action_block()};
+  l.rewards = combat::combat_rewards("each glove");
+  l.calls = boxing_calls();
+  return l;
+}
+
+}  // namespace olympics::sports::boxing
+
+namespace olympics::sports {
+std::unique_ptr<Sport> make_boxing() { return std::make_unique<boxing::BoxingSport>(); }
+}  // namespace olympics::sports
