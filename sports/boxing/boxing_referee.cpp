@@ -53,13 +53,17 @@ void BoxingReferee::update(double time, const std::array<bool, 2>& down) {
     if (up_since_[b] >= 0 && time - up_since_[b] >= rules_.up_s) {
       down_since_[b] = -1;
       calls_.push_back({"up", b, time, round_, {}});
-    } else if (time - down_since_[b] >= rules_.count_s) {
-      calls_.push_back({"knockout", b, time, round_, {}});
-      phase_ = Phase::Over;
-      winner_ = 1 - b;
-      reason_ = "knockout";
-      return;
     }
+  }
+  std::array<bool, 2> out{};
+  for (int b = 0; b < 2; ++b) out[b] = down_since_[b] >= 0 && time - down_since_[b] >= rules_.count_s;
+  if (out[0] || out[1]) {
+    for (int b = 0; b < 2; ++b)
+      if (out[b]) calls_.push_back({"knockout", b, time, round_, {}});
+    phase_ = Phase::Over;
+    winner_ = out[0] && out[1] ? -1 : (out[0] ? 1 : 0);
+    reason_ = out[0] && out[1] ? "double_knockout" : "knockout";
+    return;
   }
   if (time - phase_start_ >= rules_.round_s) end_round(time);
 }
