@@ -1,11 +1,12 @@
-// Small pieces the benchmarks share.
+// Pieces the benchmarks share: what a policy is told of an in-process match, medians, and the
+// speed of a sport's 1v1 against the bare physics of the same humanoids.
 #pragma once
 
-#include <algorithm>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include "core/control_rate.h"
+#include "core/model_spec.h"
 #include "match_info.h"
 #include "sport.h"
 
@@ -13,15 +14,20 @@ namespace olympics::bench {
 
 // What a policy is told of a match played in process (the server tells remote clients the same
 // through match_created_t).
-inline client::MatchInfo in_process_match_info(const std::string& sport, const std::string& mode,
-                                               const sports::SportMatch& match) {
-  return {sport, mode, core::kControlDt,
-          client::ObservationLayout::from_blocks(match.layout().observation), match.action_size()};
-}
+client::MatchInfo in_process_match_info(const std::string& sport, const std::string& mode,
+                                        const sports::SportMatch& match);
 
-inline double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
+double median(std::vector<double> v);
+
+// Ticks per second of a sport's 1v1 with zero actions, one core: matches of `ticks` each (or
+// until one ends), only the stepping timed.
+double match_ticks_per_s(const std::string& sport, double seconds, int ticks);
+// Likewise for two humanoids of `spec` with nothing else: no arena, referee or rewards.
+double bare_ticks_per_s(const core::ModelSpec& spec, double seconds, int ticks);
+// Both, interleaved `repeats` times so that drift hits both alike: medians and their ratio.
+// `ticks` short enough that no player falls (1.5 s) keeps both doing the same physics: a match
+// puts fallen players back on their marks, bare physics leaves them on the floor.
+nlohmann::json speed_1v1(const std::string& sport, const core::ModelSpec& players, double seconds,
+                         int repeats, int ticks);
 
 }  // namespace olympics::bench

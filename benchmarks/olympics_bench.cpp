@@ -3,9 +3,11 @@
 //   olympics-bench physics [--json] [--seconds S] [--repeats R] [--threads T] [--no-mujoco]
 //   olympics-bench server  [--json] [--seconds S] [--matches M] [--workers W]
 //   olympics-bench racket  [--json] [--episodes N] [--seconds S] [--repeats R]
+//   olympics-bench combat  [--json] [--bouts N] [--seconds S] [--repeats R]
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
+#include "combat_bench.h"
 #include "physics_bench.h"
 #include "racket_bench.h"
 #include "server_bench.h"
@@ -45,6 +47,16 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   rack->add_option("--repeats", racket.repeats, "interleaved repeats (median reported)")
       ->check(CLI::PositiveNumber);
+  olympics::bench::CombatBenchOptions combat;
+  auto* comb = app.add_subcommand(
+      "combat", "fencing / boxing: touches and punches per minute by pairing, ticks/s vs bare");
+  comb->add_flag("--json", json, "print one JSON object instead of a table");
+  comb->add_option("--bouts", combat.bouts, "bouts per sport and pairing (seeds 1..N)")
+      ->check(CLI::PositiveNumber);
+  comb->add_option("--seconds", combat.seconds, "wall seconds per speed measurement")
+      ->check(CLI::PositiveNumber);
+  comb->add_option("--repeats", combat.repeats, "interleaved repeats (median reported)")
+      ->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);
 
   if (*phys) {
@@ -69,6 +81,13 @@ int main(int argc, char** argv) {
       std::printf("%s\n", report.dump(2).c_str());
     else
       olympics::bench::print_racket_report(report);
+  }
+  if (*comb) {
+    auto report = olympics::bench::run_combat_bench(combat);
+    if (json)
+      std::printf("%s\n", report.dump(2).c_str());
+    else
+      olympics::bench::print_combat_report(report);
   }
   return 0;
 }

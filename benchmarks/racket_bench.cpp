@@ -1,7 +1,6 @@
 #include "racket_bench.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 
 #include "bench_support.h"
@@ -14,8 +13,6 @@
 
 namespace olympics::bench {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 struct EpisodeStats {
   int episodes = 0, balls = 0, touched = 0, first_ball_touched = 0, returns_in = 0, falls = 0;
@@ -58,45 +55,6 @@ EpisodeStats ball_return(const std::string& sport, const std::string& policy_nam
   return st;
 }
 
-// Ticks per second of a 1v1 match with zero actions (restarted whenever it ends).
-double match_ticks_per_s(const std::string& sport, double seconds) {
-  const auto& s = sports::sport_or_throw(sport);
-  std::vector<float> act(69, 0.0f);
-  std::vector<std::span<const float>> actions(2, std::span<const float>(act));
-  std::vector<float> obs;
-  long ticks = 0;
-  std::uint64_t seed = 1;
-  const auto start = Clock::now();
-  while (std::chrono::duration<double>(Clock::now() - start).count() < seconds) {
-    auto match = s.create({"1v1", seed++, 60.0, {}});
-    obs.resize(match->obs_size());
-    for (int t = 0; t < 300 && !match->outcome().match_over; ++t, ++ticks) {
-      for (int slot = 0; slot < 2; ++slot) match->observe(slot, obs);
-      match->step(actions);
-    }
-  }
-  return ticks / std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-// Ticks per second of the same two equipped humanoids with nothing else.
-double bare_ticks_per_s(const sports::equipment::EquipmentSpec& equipment, double seconds) {
-  core::ModelSpec spec = core::load_humanoid(core::HumanoidKind::Smpl);
-  sports::equipment::attach_equipment(spec, equipment);
-  std::vector<float> act(69, 0.0f);
-  long ticks = 0;
-  const auto start = Clock::now();
-  while (std::chrono::duration<double>(Clock::now() - start).count() < seconds) {
-    core::HumanoidScene scene;
-    scene.add_humanoid(spec, {{-2, 0, 0}, 0});
-    scene.add_humanoid(spec, {{2, 0, 0}, M_PI});
-    for (int t = 0; t < 300; ++t, ++ticks) {
-      for (int i = 0; i < 2; ++i) scene.set_action(i, act);
-      scene.tick();
-    }
-  }
-  return ticks / std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 }  // namespace
 
 nlohmann::json run_racket_bench(const RacketBenchOptions& o) {
@@ -113,17 +71,11 @@ nlohmann::json run_racket_bench(const RacketBenchOptions& o) {
                                   {"falls", st.falls},
                                   {"touch_fraction", double(st.touched) / st.balls}};
     }
-    const auto equipment =
-        sport == "tennis" ? sports::racket::tennis_racket() : sports::racket::table_tennis_paddle();
-    std::vector<double> match, bare, ratio;
-    for (int i = 0; i < o.repeats; ++i) {  // interleaved, so drift hits both alike
-      match.push_back(match_ticks_per_s(sport, o.seconds));
-      bare.push_back(bare_ticks_per_s(equipment, o.seconds));
-      ratio.push_back(match.back() / bare.back());
-    }
-    r["speed_1v1"] = {{"match_ticks_per_s", median(match)},
-                      {"bare_physics_ticks_per_s", median(bare)},
-                      {"ratio", median(ratio)}};
+    core::ModelSpec players = core::load_humanoid(core::HumanoidKind::Smpl);
+    sports::equipment::attach_equipment(players, sport == "tennis"
+                                                     ? sports::racket::tennis_racket()
+                                                     : sports::racket::table_tennis_paddle());
+    r["speed_1v1"] = speed_1v1(sport, players, o.seconds, o.repeats, /*ticks=*/300);
   }
   return report;
 }

@@ -8,9 +8,8 @@
 #include "core/humanoid_assets.h"
 
 namespace olympics::sports::boxing {
-namespace {
 
-const core::ModelSpec& boxer(bool both_gloves) {
+const core::ModelSpec& boxer_model(bool both_gloves) {
   auto build = [](bool both) {
     core::ModelSpec s = core::load_humanoid(core::HumanoidKind::Smpl);
     for (const char* hand : {"L_Hand", "R_Hand"}) {
@@ -23,6 +22,8 @@ const core::ModelSpec& boxer(bool both_gloves) {
   static const core::ModelSpec two = build(true), one = build(false);
   return both_gloves ? two : one;
 }
+
+namespace {
 
 double tenths(double x) { return std::round(x * 10) / 10; }
 
@@ -73,7 +74,7 @@ BoxingMatch::BoxingMatch(const BoxingConfig& config, const ModeSpec& mode, Layou
       config_(config),
       rng_(settings.seed),
       referee_(config.rules) {
-  const core::ModelSpec& spec = boxer(config_.both_gloves);
+  const core::ModelSpec& spec = boxer_model(config_.both_gloves);
   hands_ = {spec.body_index("L_Hand"), spec.body_index("R_Hand")};
   for (int h = 0; h < 2; ++h) glove_centre_[h] = glove_centre(spec, hands_[h]);
   targets_ = combat::target_body_indices(spec);

@@ -23,6 +23,9 @@ struct BoxingConfig {
   double punch_refractory_s = 0.3;  // one glove scores at most this often
 };
 
+// The SMPL humanoid with gloves on both hands, or on the right only.
+const core::ModelSpec& boxer_model(bool both_gloves);
+
 std::vector<LayoutBlock> boxing_task_layout();
 std::vector<RefereeCall> boxing_calls();
 // The time a whole bout takes: every round and rest, and a few seconds to spare.

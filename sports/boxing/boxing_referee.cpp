@@ -56,7 +56,8 @@ void BoxingReferee::update(double time, const std::array<bool, 2>& down) {
     }
   }
   std::array<bool, 2> out{};
-  for (int b = 0; b < 2; ++b) out[b] = down_since_[b] >= 0 && time - down_since_[b] >= rules_.count_s;
+  for (int b = 0; b < 2; ++b)
+    out[b] = down_since_[b] >= 0 && time - down_since_[b] >= rules_.count_s;
   if (out[0] || out[1]) {
     for (int b = 0; b < 2; ++b)
       if (out[b]) calls_.push_back({"knockout", b, time, round_, {}});

@@ -10,7 +10,14 @@
 namespace olympics::sports::fencing {
 namespace {
 
-const core::ModelSpec& fencer() {
+double tenths(double x) { return std::round(x * 10) / 10; }
+
+// A tip held on a target is one hit, not one per physics step.
+constexpr double kHitRefractoryS = 0.1;
+
+}  // namespace
+
+const core::ModelSpec& fencer_model() {
   static const core::ModelSpec spec = [] {
     core::ModelSpec s = core::load_humanoid(core::HumanoidKind::Smpl);
     equipment::attach_equipment(s, epee());
@@ -18,13 +25,6 @@ const core::ModelSpec& fencer() {
   }();
   return spec;
 }
-
-double tenths(double x) { return std::round(x * 10) / 10; }
-
-// A tip held on a target is one hit, not one per physics step.
-constexpr double kHitRefractoryS = 0.1;
-
-}  // namespace
 
 std::vector<LayoutBlock> fencing_task_layout() {
   std::vector<LayoutBlock> blocks = combat::opponent_blocks();
@@ -55,7 +55,7 @@ FencingMatch::FencingMatch(const FencingConfig& config, const ModeSpec& mode, La
       config_(config),
       rng_(settings.seed),
       referee_(config.rules) {
-  const core::ModelSpec& spec = fencer();
+  const core::ModelSpec& spec = fencer_model();
   hand_body_ = spec.body_index("R_Hand");
   hand_own_geoms_ = static_cast<int>(spec.bodies[hand_body_].geoms.size()) - epee_geom_count();
   targets_ = combat::target_body_indices(spec);

@@ -21,6 +21,9 @@ struct FencingConfig {
   bool whole_body = false;    // every body is a target (épée), not only the torso and head
 };
 
+// The SMPL humanoid holding an épée, as fencers are built.
+const core::ModelSpec& fencer_model();
+
 std::vector<LayoutBlock> fencing_task_layout();
 std::vector<RefereeCall> fencing_calls();
 

@@ -30,16 +30,15 @@ std::vector<SettingSpec> RacketSport::settings() const {
     return {SettingSpec::number("games_to_win", 1, "games that win the match (best of 2n-1)", 1, 4),
             SettingSpec::number("points_per_game", 11, "points that win a game, by 2", 1, 21),
             stall};
-  return {SettingSpec::number("net_height", 1.0,
-                              "m; the seed's 1.0 (a real net is 0.914 at the centre)", 0.5, 1.5),
-          SettingSpec::choice("format", "sets", "\"tiebreak\": every set is one tie-break game",
-                              {"sets", "tiebreak"}),
-          SettingSpec::number("sets_to_win", 1, "sets that win the match (best of 2n-1)", 1, 3),
-          SettingSpec::number("games_per_set", 6, "games that win a set, by 2; tie-break at n-n",
-                              1, 6),
-          SettingSpec::number("tiebreak_points", 7, "points that win a tie-break game, by 2", 1,
-                              10),
-          stall};
+  return {
+      SettingSpec::number("net_height", 1.0,
+                          "m; the seed's 1.0 (a real net is 0.914 at the centre)", 0.5, 1.5),
+      SettingSpec::choice("format", "sets", "\"tiebreak\": every set is one tie-break game",
+                          {"sets", "tiebreak"}),
+      SettingSpec::number("sets_to_win", 1, "sets that win the match (best of 2n-1)", 1, 3),
+      SettingSpec::number("games_per_set", 6, "games that win a set, by 2; tie-break at n-n", 1, 6),
+      SettingSpec::number("tiebreak_points", 7, "points that win a tie-break game, by 2", 1, 10),
+      stall};
 }
 
 RacketMatchConfig RacketSport::config(const std::string& mode,

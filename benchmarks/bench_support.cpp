@@ -1,0 +1,83 @@
+#include "bench_support.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/control_rate.h"
+#include "core/humanoid_scene.h"
+#include "registry.h"
+
+namespace olympics::bench {
+namespace {
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+}  // namespace
+
+client::MatchInfo in_process_match_info(const std::string& sport, const std::string& mode,
+                                        const sports::SportMatch& match) {
+  return {sport, mode, core::kControlDt,
+          client::ObservationLayout::from_blocks(match.layout().observation), match.action_size()};
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+double match_ticks_per_s(const std::string& sport, double seconds, int ticks_per_match) {
+  const auto& s = sports::sport_or_throw(sport);
+  std::vector<float> act(69, 0.0f);
+  std::vector<std::span<const float>> actions(2, std::span<const float>(act));
+  std::vector<float> obs;
+  long ticks = 0;
+  double stepping = 0;
+  std::uint64_t seed = 1;
+  while (stepping < seconds) {
+    auto match = s.create({"1v1", seed++, 60.0, {}});
+    obs.resize(match->obs_size());
+    const auto start = Clock::now();
+    for (int t = 0; t < ticks_per_match && !match->outcome().match_over; ++t, ++ticks) {
+      for (int slot = 0; slot < 2; ++slot) match->observe(slot, obs);
+      match->step(actions);
+    }
+    stepping += since(start);
+  }
+  return ticks / stepping;
+}
+
+double bare_ticks_per_s(const core::ModelSpec& spec, double seconds, int ticks_per_match) {
+  std::vector<float> act(69, 0.0f);
+  long ticks = 0;
+  double stepping = 0;
+  while (stepping < seconds) {
+    core::HumanoidScene scene;
+    scene.add_humanoid(spec, {{-2, 0, 0}, 0});
+    scene.add_humanoid(spec, {{2, 0, 0}, M_PI});
+    const auto start = Clock::now();
+    for (int t = 0; t < ticks_per_match; ++t, ++ticks) {
+      for (int i = 0; i < 2; ++i) scene.set_action(i, act);
+      scene.tick();
+    }
+    stepping += since(start);
+  }
+  return ticks / stepping;
+}
+
+nlohmann::json speed_1v1(const std::string& sport, const core::ModelSpec& players, double seconds,
+                         int repeats, int ticks) {
+  std::vector<double> match, bare, ratio;
+  for (int i = 0; i < repeats; ++i) {
+    match.push_back(match_ticks_per_s(sport, seconds, ticks));
+    bare.push_back(bare_ticks_per_s(players, seconds, ticks));
+    ratio.push_back(match.back() / bare.back());
+  }
+  return {{"match_ticks_per_s", median(match)},
+          {"bare_physics_ticks_per_s", median(bare)},
+          {"ratio", median(ratio)},
+          {"ticks_per_match", ticks}};
+}
+
+}  // namespace olympics::bench
