@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <thread>
 
 #include "match_client.h"
@@ -18,19 +19,32 @@
 
 namespace {
 
-// With --calls: the referee's point calls and the score as they happen (from the observation's
-// info, so any agent of the match can follow it live).
+// With --calls: the referee's decisions and the score as they happen (from the observation's
+// info, so any agent of the match can follow it live). Ball contacts, hits and punches are left
+// out: they come many a second.
 void print_calls(const olympics::client::Observation& obs) {
   if (obs.info.empty()) return;
   const auto info = nlohmann::json::parse(obs.info, nullptr, false);
   if (!info.is_object() || !info.contains("events")) return;
+  static const std::set<std::string> decisions = {"point", "let",      "halt",      "knockdown",
+                                                  "up",    "knockout", "round_end", "round_start"};
+  const std::string score = info.contains("score") ? info["score"].value("text", "") : "";
   for (const auto& e : info["events"]) {
-    if (e.value("call", "") != "point") continue;
-    std::string score = info.contains("score") ? info["score"].value("text", "") : "";
-    std::printf("tick %d: point to team %d (%s)  %s\n", obs.tick, e.value("winner_team", -1),
-                e.value("reason", "").c_str(), score.c_str());
-    std::fflush(stdout);
+    const std::string call = e.value("call", "");
+    if (!decisions.count(call)) continue;
+    std::string line = "tick " + std::to_string(obs.tick) + ": " + call;
+    if (e.contains("winner_team"))
+      line += " to team " + std::to_string(e["winner_team"].get<int>());
+    else if (e.contains("slot"))
+      line += " slot " + std::to_string(e["slot"].get<int>());
+    if (e.contains("round")) line += " round " + std::to_string(e["round"].get<int>());
+    if (e.contains("reason")) line += " (" + e["reason"].get<std::string>() + ")";
+    if (e.contains("card_0"))
+      line += " card " + std::to_string(e["card_0"].get<int>()) + "-" +
+              std::to_string(e["card_1"].get<int>());
+    std::printf("%s  %s\n", line.c_str(), score.c_str());
   }
+  std::fflush(stdout);
 }
 
 // What the policies are told of the match they are about to play.
@@ -131,7 +145,7 @@ int main(int argc, char** argv) {
   app.add_option("--think-ms", think_ms, "sleep this long before each action (a slow policy)");
   app.add_flag("--json", json, "print the result as JSON");
   bool calls = false;
-  app.add_flag("--calls", calls, "print the referee's point calls and the score as they happen");
+  app.add_flag("--calls", calls, "print the referee's decisions and the score as they happen");
   CLI11_PARSE(app, argc, argv);
   if (options.policy_id.empty()) options.policy_id = policy_name;
 
