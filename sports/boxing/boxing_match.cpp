@@ -27,17 +27,15 @@ namespace {
 
 double tenths(double x) { return std::round(x * 10) / 10; }
 
-// A punch to the back does not score: the contact's normal (from the target towards the glove)
-// points within 60 degrees of straight behind the defender.
-bool from_front_or_side(const Touch& t, const core::BodyState& defender_root) {
-  Eigen::Vector3d forward = defender_root.orientation * Eigen::Vector3d::UnitX();
-  Eigen::Vector3d n = t.normal;
+}  // namespace
+
+bool from_front_or_side(const Eigen::Vector3d& normal, const Eigen::Quaterniond& defender) {
+  Eigen::Vector3d forward = defender * Eigen::Vector3d::UnitX();
+  Eigen::Vector3d n = normal;
   forward.z() = 0, n.z() = 0;
   if (n.norm() < 1e-6 || forward.norm() < 1e-6) return true;  // from above or below
   return n.normalized().dot(forward.normalized()) >= -0.5;
 }
-
-}  // namespace
 
 double bout_length_s(const BoxingRules& r) {
   return r.rounds * r.round_s + (r.rounds - 1) * r.rest_s + 5;
@@ -104,7 +102,7 @@ void BoxingMatch::after_physics_step(double) {
     if (t.striker_body != hands_[0] && t.striker_body != hands_[1]) continue;
     if (!referee_.in_round() || referee_.counting(0) || referee_.counting(1)) continue;
     if (down(t.attacker) || down(t.defender)) continue;
-    if (!from_front_or_side(t, player(t.defender).body_state(0))) continue;
+    if (!from_front_or_side(t.normal, player(t.defender).body_state(0).orientation)) continue;
     nlohmann::json punch = referee_event("punch", time(), t.attacker);
     punch["target_slot"] = t.defender;
     punch["body"] = player(t.defender).spec().bodies[t.target_body].name;

@@ -28,6 +28,11 @@ const core::ModelSpec& boxer_model(bool both_gloves);
 
 std::vector<LayoutBlock> boxing_task_layout();
 std::vector<RefereeCall> boxing_calls();
+// Does a punch whose contact normal (from the target towards the glove) is `normal` land from
+// the front or the side of a defender turned `defender`? Not within 60 degrees of straight
+// behind it.
+bool from_front_or_side(const Eigen::Vector3d& normal, const Eigen::Quaterniond& defender);
+
 // The time a whole bout takes: every round and rest, and a few seconds to spare.
 double bout_length_s(const BoxingRules& rules);
 

@@ -39,6 +39,7 @@ class HumanoidScene {
   void physics_step();  // one physics step (a tick is `substeps` of these)
 
   PhysicsWorld& world() { return *world_; }
+  const PhysicsWorld& world() const { return *world_; }
   const SceneSettings& settings() const { return settings_; }
   long physics_steps() const { return physics_steps_; }
 

@@ -43,6 +43,8 @@ class SmplMatch : public SportMatch {
   int tick() const final { return tick_; }
   void forfeit(int losing_team, const std::string& reason) final;
   std::uint64_t state_hash() const final;
+  // The world as it stands, read-only (tests, scene data for viewers).
+  const core::HumanoidScene& scene() const { return scene_; }
 
  protected:
   // `layout` must begin with the self observation block ("self").
@@ -73,7 +75,6 @@ class SmplMatch : public SportMatch {
   // Back to the rest pose at `placement`, fall detection restarted.
   void reset_player(int slot, const core::RootPlacement& placement);
   core::HumanoidScene& scene() { return scene_; }
-  const core::HumanoidScene& scene() const { return scene_; }
   core::Humanoid& player(int slot) { return scene_.humanoid(slot); }
   const core::Humanoid& player(int slot) const { return scene_.humanoid(slot); }
   const ModeSpec& mode() const { return mode_; }

@@ -6,7 +6,12 @@
 #include <cmath>
 #include <set>
 
+#include "arm_control.h"
+#include "boxing/boxing_match.h"
 #include "core/control_rate.h"
+#include "core/humanoid_scene.h"
+#include "core/self_observation.h"
+#include "fencing/fencing_match.h"
 #include "policies.h"
 #include "registry.h"
 
@@ -153,6 +158,57 @@ TEST(BoxingBout, RoundsEndWithCardsAndStartInTheCorners) {
   }
   std::printf("%s after %d punches, cards %g-%g\n", o.reason.c_str(), punches, o.scores[0],
               o.scores[1]);
+}
+
+TEST(BoxingRules, APunchFromBehindDoesNotScore) {
+  // A defender facing +x; normals point from the target towards the glove.
+  const Eigen::Quaterniond facing_x = Eigen::Quaterniond::Identity();
+  EXPECT_TRUE(boxing::from_front_or_side({1, 0, 0}, facing_x)) << "straight in front";
+  EXPECT_TRUE(boxing::from_front_or_side({0, 1, 0}, facing_x)) << "the side";
+  EXPECT_TRUE(boxing::from_front_or_side({-0.4, 1, 0}, facing_x)) << "the side, a little behind";
+  EXPECT_FALSE(boxing::from_front_or_side({-1, 0, 0}, facing_x)) << "the back";
+  EXPECT_FALSE(boxing::from_front_or_side({-1, 0.5, 0.2}, facing_x)) << "the back, off centre";
+  const Eigen::Quaterniond facing_y(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
+  EXPECT_FALSE(boxing::from_front_or_side({0, -1, 0}, facing_y)) << "turned: its back is -y";
+  EXPECT_TRUE(boxing::from_front_or_side({0, 0, 1}, facing_x)) << "from above: the head's top";
+}
+
+// The épées are real collision geometry, so blades parry and are parried. Two fencers 1.8 m
+// apart (no body within reach of the other), held by the pelvis and weightless so that neither
+// the bodies nor the arms move but as the drives say: slot 0 points its blade straight ahead,
+// slot 1 (offset 0.6 m across) 20 degrees out to its right, so the blades cross at shoulder
+// height. They meet and stay blocked: the only contacts between the two are épée on épée.
+TEST(FencingBout, BladesMeetBladesAsRealGeometry) {
+  core::SceneSettings weightless;
+  weightless.world.gravity = 0;
+  core::HumanoidScene scene(weightless);
+  const core::ModelSpec& fencer = fencing::fencer_model();
+  scene.add_humanoid(fencer, {{-0.9, 0.4, 1.2}, 0});
+  scene.add_humanoid(fencer, {{0.9, -0.2, 1.2}, M_PI});
+  for (int i = 0; i < 2; ++i) {
+    dJointID hold = dJointCreateFixed(scene.world().world(), nullptr);
+    dJointAttach(hold, scene.humanoid(i).ode_body(0), nullptr);
+    dJointSetFixed(hold);
+  }
+  const int hand = fencer.body_index("R_Hand");
+  std::vector<float> obs(358), act(69);
+  int blocked_ticks = 0;
+  for (int t = 0; t < 40; ++t) {
+    for (int s = 0; s < 2; ++s) {
+      core::write_self_observation(scene.humanoid(s).body_states(), obs);
+      std::fill(act.begin(), act.end(), 0.0f);
+      client::point_arm(obs, act, client::Arm::Right,
+                        s == 0 ? Eigen::Vector3d(1, 0, 0) : Eigen::Vector3d(0.94, -0.34, 0));
+      scene.set_action(s, act);
+    }
+    scene.tick();
+    const double hands =
+        (scene.humanoid(0).body_state(hand).position - scene.humanoid(1).body_state(hand).position)
+            .norm();
+    ASSERT_GT(hands, 0.5) << "the hands stay apart: contacts are the blades'";
+    blocked_ticks += scene.world().last_inter_entity_contact_count() > 0;
+  }
+  EXPECT_GE(blocked_ticks, 10) << "the blades met and held each other";
 }
 
 }  // namespace
