@@ -52,6 +52,17 @@ LayoutBlock smpl_action_block() {
           "23 joints x (x, y, z) hinges in body order, L_Hip first"};
 }
 
+Layout smpl_layout(const std::vector<LayoutBlock>& task, std::vector<RewardTerm> rewards,
+                   std::vector<RefereeCall> calls) {
+  Layout l;
+  l.observation = {smpl_self_observation_block()};
+  l.observation.insert(l.observation.end(), task.begin(), task.end());
+  l.action = {smpl_action_block()};
+  l.rewards = std::move(rewards);
+  l.calls = std::move(calls);
+  return l;
+}
+
 int Layout::observation_size() const {
   int n = 0;
   for (const auto& b : observation) n += b.size;
@@ -71,7 +82,7 @@ std::vector<std::string> Layout::reward_names() const {
 }
 
 SettingSpec SettingSpec::number(std::string key, nlohmann::json value, std::string meaning,
-                               double min, double max) {
+                                double min, double max) {
   SettingSpec s;
   s.key = std::move(key), s.default_value = std::move(value), s.meaning = std::move(meaning);
   s.min = min, s.max = max;
@@ -79,7 +90,7 @@ SettingSpec SettingSpec::number(std::string key, nlohmann::json value, std::stri
 }
 
 SettingSpec SettingSpec::choice(std::string key, std::string value, std::string meaning,
-                               std::vector<std::string> choices) {
+                                std::vector<std::string> choices) {
   SettingSpec s;
   s.key = std::move(key), s.default_value = std::move(value), s.meaning = std::move(meaning);
   s.choices = std::move(choices);

@@ -110,6 +110,11 @@ struct Layout {
   std::vector<std::string> reward_names() const;
 };
 
+// The layout of an SMPL sport's mode: the self observation then `task` blocks, the 69 joint
+// targets, its reward terms and its referee's calls.
+Layout smpl_layout(const std::vector<LayoutBlock>& task, std::vector<RewardTerm> rewards,
+                   std::vector<RefereeCall> calls);
+
 // A sport's settings: each key with its default, what it means, and what values it takes, for
 // `describe` and for refusing what would break a match.
 struct SettingSpec {

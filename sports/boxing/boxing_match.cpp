@@ -5,6 +5,7 @@
 #include "boxing/gloves.h"
 #include "combat/combat_observation.h"
 #include "combat/combat_rewards.h"
+#include "combat/start_placement.h"
 #include "core/humanoid_assets.h"
 
 namespace olympics::sports::boxing {
@@ -87,9 +88,7 @@ BoxingMatch::BoxingMatch(const BoxingConfig& config, const ModeSpec& mode, Layou
 }
 
 core::RootPlacement BoxingMatch::corner(int b) {
-  std::uniform_real_distribution<double> u(-1, 1);
-  const double along = u(rng_), across = u(rng_), turn = u(rng_);
-  return config_.ring.start_placement(b, {along, across, turn});
+  return combat::jittered_start(b, config_.ring.start, rng_);
 }
 
 Eigen::Vector3d BoxingMatch::glove_position(int slot, int hand) const {
@@ -191,7 +190,7 @@ void BoxingMatch::write_task_observation(int slot, const HeadingFrame& frame,
       out.put(frame.point(g.position)).put(frame.vector(g.velocity));
     }
   }
-  const double side = -Ring::side(slot);  // +1: my side is -x
+  const double side = -combat::side(slot);  // +1: my side is -x
   const double x = frame.root.position.x() * side, y = frame.root.position.y() * side;
   const double half = config_.ring.half();
   out.begin("ring").put(x).put(y).put(half - x).put(half + x).put(half - y).put(half + y);

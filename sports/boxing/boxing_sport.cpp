@@ -46,13 +46,7 @@ std::unique_ptr<SportMatch> BoxingSport::create(const MatchSettings& settings) c
 
 Layout BoxingSport::layout(const std::string& mode) const {
   modes_.at(mode);
-  Layout l;
-  l.observation = {smpl_self_observation_block()};
-  for (auto& b : boxing_task_layout()) l.observation.push_back(b);
-  l.action = {smpl_action_block()};
-  l.rewards = combat::combat_rewards("each glove");
-  l.calls = boxing_calls();
-  return l;
+  return smpl_layout(boxing_task_layout(), combat::combat_rewards("each glove"), boxing_calls());
 }
 
 }  // namespace olympics::sports::boxing

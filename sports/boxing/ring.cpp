@@ -21,9 +21,4 @@ void Ring::build(core::PhysicsWorld& world) const {
   }
 }
 
-core::RootPlacement Ring::start_placement(int boxer, const Eigen::Vector3d& jitter) const {
-  return {{side(boxer) * start + 0.1 * jitter.x(), 0.1 * jitter.y(), 0},
-          (boxer == 0 ? 0.0 : M_PI) + 0.1 * jitter.z()};
-}
-
 }  // namespace olympics::sports::boxing

@@ -1,7 +1,7 @@
 // The boxing ring (SPORTS.md: 5 x 5 m, the seed's; real rings 4.9-6.1 m inside the ropes),
 // centred on the origin: four ropes a side at 0.4, 0.7, 1.0 and 1.3 m (AIBA's heights) and a
 // post at each corner, as real (rigid) collision geometry. Boxer 0 starts at x = -start facing
-// +x, boxer 1 at x = +start facing -x.
+// +x, boxer 1 at x = +start facing -x (combat/start_placement.h).
 #pragma once
 
 #include <Eigen/Core>
@@ -18,10 +18,6 @@ struct Ring {
   double half() const { return size / 2; }
   // Ropes and posts into `world`.
   void build(core::PhysicsWorld& world) const;
-  // At its start, facing the other; `jitter` (each in [-1, 1]: along, across, turn) moves the
-  // boxer by up to 0.1 m and turns it by up to 0.1 rad, so that seeds differ.
-  core::RootPlacement start_placement(int boxer, const Eigen::Vector3d& jitter) const;
-  static int side(int boxer) { return boxer == 0 ? -1 : 1; }
 
   static constexpr double kRopeHeights[4] = {0.4, 0.7, 1.0, 1.3};
   static constexpr double kRopeRadius = 0.02;

@@ -4,6 +4,7 @@
 
 #include "combat/combat_observation.h"
 #include "combat/combat_rewards.h"
+#include "combat/start_placement.h"
 #include "core/humanoid_assets.h"
 #include "fencing/epee.h"
 
@@ -148,9 +149,7 @@ void FencingMatch::record_halt(const Halt& halt) {
 }
 
 core::RootPlacement FencingMatch::on_guard(int fencer) {
-  std::uniform_real_distribution<double> u(-1, 1);
-  const double along = u(rng_), across = u(rng_), turn = u(rng_);
-  return config_.piste.on_guard_placement(fencer, {along, across, turn});
+  return combat::jittered_start(fencer, config_.piste.on_guard, rng_);
 }
 
 void FencingMatch::back_on_guard() {
@@ -179,7 +178,7 @@ void FencingMatch::write_task_observation(int slot, const HeadingFrame& frame,
     const auto tip = combat::point_on_body(player(who).body_state(hand_body_), kTipInHand);
     out.begin(block).put(frame.point(tip.position)).put(frame.vector(tip.velocity));
   }
-  const double side = -Piste::side(slot);  // +1: my end is at -x
+  const double side = -combat::side(slot);  // +1: my end is at -x
   const double along = frame.root.position.x() * side, across = frame.root.position.y() * side;
   const double half = config_.piste.length / 2;
   out.begin("piste").put(along).put(across).put(along + half).put(half - along);

@@ -63,13 +63,8 @@ std::unique_ptr<SportMatch> FencingSport::create(const MatchSettings& settings) 
 
 Layout FencingSport::layout(const std::string& mode) const {
   modes_.at(mode);
-  Layout l;
-  l.observation = {smpl_self_observation_block()};
-  for (auto& b : fencing_task_layout()) l.observation.push_back(b);
-  l.action = {smpl_action_block()};
-  l.rewards = combat::combat_rewards("the épée's tip");
-  l.calls = fencing_calls();
-  return l;
+  return smpl_layout(fencing_task_layout(), combat::combat_rewards("the épée's tip"),
+                     fencing_calls());
 }
 
 }  // namespace olympics::sports::fencing

@@ -69,13 +69,8 @@ std::unique_ptr<SportMatch> RacketSport::create(const MatchSettings& settings) c
 }
 
 Layout RacketSport::layout(const std::string& mode) const {
-  Layout l;
-  l.observation = {smpl_self_observation_block()};
-  for (auto& b : racket_task_layout(modes_.at(mode).slot_count())) l.observation.push_back(b);
-  l.action = {smpl_action_block()};
-  l.rewards = racket_rewards();
-  l.calls = racket_calls();
-  return l;
+  return smpl_layout(racket_task_layout(modes_.at(mode).slot_count()), racket_rewards(),
+                     racket_calls());
 }
 
 }  // namespace olympics::sports::racket

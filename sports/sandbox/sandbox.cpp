@@ -34,20 +34,18 @@ std::unique_ptr<SportMatch> SandboxSport::create(const MatchSettings& settings) 
 
 Layout SandboxSport::layout(const std::string& mode) const {
   const int others = modes_.at(mode).slot_count() - 1;
-  Layout l;
-  l.observation = {
-      smpl_self_observation_block(),
-      {"time_remaining", 1, "fraction", "share of the time limit still to play"},
-  };
+  std::vector<LayoutBlock> task = {
+      {"time_remaining", 1, "fraction", "share of the time limit still to play"}};
   if (others > 0)
-    l.observation.push_back({"others", kPerOther * others, "m, m/s, flag",
-                             "per other slot in slot order: root position (3) and root velocity "
-                             "(3) in this humanoid's heading frame, clamped to +-5; fallen (1)"});
-  l.action = {smpl_action_block()};
-  l.rewards = {{"alive", 1.0, "+1 each tick while standing"},
-               {"fall", 1.0, "-1 on the tick the humanoid falls"}};
-  l.calls = {{"fall", "a humanoid fell (the body that touched the ground or dropped too low)"}};
-  return l;
+    task.push_back({"others", kPerOther * others, "m, m/s, flag",
+                    "per other slot in slot order: root position (3) and root velocity (3) in "
+                    "this humanoid's heading frame, clamped to +-5; fallen (1)"});
+  return smpl_layout(task,
+                     {{"alive", 1.0, "+1 each tick while standing"},
+                      {"fall", 1.0, "-1 on the tick the humanoid falls"}},
+                     {{"fall",
+                       "a humanoid fell (the body that touched the ground or dropped "
+                       "too low)"}});
 }
 
 SandboxMatch::SandboxMatch(const ModeSpec& mode, Layout layout, const MatchSettings& settings)
