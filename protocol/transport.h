@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "wire_check.h"
+
 namespace olympics::protocol {
 
 struct TransportOptions {
@@ -69,11 +71,18 @@ void Transport::publish(const std::string& channel, const Msg& msg) {
   publish_raw(channel, buf.data(), static_cast<int>(buf.size()));
 }
 
-// Decodes an LCM message; nullopt when the bytes are truncated, corrupt or of another type.
+// Decodes an LCM message; nullopt when the bytes are truncated, corrupt, or of another type or
+// version. It cannot crash or allocate without bound: the bytes are checked against the type's
+// layout first (wire_check.h), and anything the decoder still throws is caught.
 template <typename Msg>
 std::optional<Msg> decode(const std::uint8_t* data, int size) {
+  if (wire_problem(Msg::getTypeName(), Msg::getHash(), data, size)) return std::nullopt;
   Msg msg;
-  if (msg.decode(data, 0, size) < 0) return std::nullopt;
+  try {
+    if (msg.decode(data, 0, size) < 0) return std::nullopt;
+  } catch (...) {
+    return std::nullopt;
+  }
   return msg;
 }
 
