@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "rate_limit.h"
 #include "wire_check.h"
 
 namespace olympics::protocol {
@@ -34,6 +35,12 @@ class Transport {
       std::function<void(const std::string& channel, const std::uint8_t* data, int size)>;
   // channel is a regular expression, as in LCM. Returns a handle for unsubscribe().
   int subscribe(const std::string& channel, RawHandler handler);
+  // The messages of one type on a channel, decoded (checked, decode()): a well-formed one reaches
+  // `handler`; anything else is counted (malformed()) and goes to `on_malformed` when given.
+  template <typename Msg>
+  int subscribe_to(const std::string& channel,
+                   std::function<void(const std::string& channel, const Msg& msg)> handler,
+                   RawHandler on_malformed = nullptr);
   void unsubscribe(int handle);
 
   template <typename Msg>
@@ -44,6 +51,12 @@ class Transport {
   bool handle(int timeout_ms);
   long published() const { return published_; }
   long dropped() const { return dropped_; }
+  // Received messages refused: they did not decode (truncated, corrupt, another version).
+  long malformed() const { return malformed_; }
+  void count_malformed() { ++malformed_; }
+  // Whether an answer to bad input (a MALFORMED error) may go out now: at most 20 a second from
+  // one process, so that a flood of bad datagrams is not answered by a flood of errors.
+  bool may_complain() { return complaints_.allow(); }
   const std::string& url() const { return url_; }
 
  private:
@@ -53,23 +66,10 @@ class Transport {
   double drop_rate_;
   std::mt19937_64 drop_rng_;
   std::mutex publish_mutex_;
-  std::atomic<long> published_{0}, dropped_{0};
+  std::atomic<long> published_{0}, dropped_{0}, malformed_{0};
   std::vector<std::unique_ptr<Subscription>> subscriptions_;
+  RateLimiter complaints_{20};
 };
-
-// The bytes of an LCM message.
-template <typename Msg>
-std::vector<std::uint8_t> encode(const Msg& msg) {
-  std::vector<std::uint8_t> buf(msg.getEncodedSize());
-  msg.encode(buf.data(), 0, static_cast<int>(buf.size()));
-  return buf;
-}
-
-template <typename Msg>
-void Transport::publish(const std::string& channel, const Msg& msg) {
-  const auto buf = encode(msg);
-  publish_raw(channel, buf.data(), static_cast<int>(buf.size()));
-}
 
 // Decodes an LCM message; nullopt when the bytes are truncated, corrupt, or of another type or
 // version. It cannot crash or allocate without bound: the bytes are checked against the type's
@@ -84,6 +84,33 @@ std::optional<Msg> decode(const std::uint8_t* data, int size) {
     return std::nullopt;
   }
   return msg;
+}
+
+// The bytes of an LCM message.
+template <typename Msg>
+std::vector<std::uint8_t> encode(const Msg& msg) {
+  std::vector<std::uint8_t> buf(msg.getEncodedSize());
+  msg.encode(buf.data(), 0, static_cast<int>(buf.size()));
+  return buf;
+}
+
+template <typename Msg>
+int Transport::subscribe_to(const std::string& channel,
+                            std::function<void(const std::string&, const Msg&)> handler,
+                            RawHandler on_malformed) {
+  return subscribe(channel,
+                   [this, handler = std::move(handler), on_malformed = std::move(on_malformed)](
+                       const std::string& ch, const std::uint8_t* data, int size) {
+                     if (auto msg = decode<Msg>(data, size)) return handler(ch, *msg);
+                     count_malformed();
+                     if (on_malformed) on_malformed(ch, data, size);
+                   });
+}
+
+template <typename Msg>
+void Transport::publish(const std::string& channel, const Msg& msg) {
+  const auto buf = encode(msg);
+  publish_raw(channel, buf.data(), static_cast<int>(buf.size()));
 }
 
 }  // namespace olympics::protocol

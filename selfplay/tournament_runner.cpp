@@ -45,16 +45,17 @@ TournamentRunner::TournamentRunner(LeagueStore& store, TournamentSpec spec, Runn
       spec_(std::move(spec)),
       settings_(std::move(settings)),
       transport_({settings_.lcm_url}) {
-  transport_.subscribe(protocol::kAnnounce, [this](const std::string&, const std::uint8_t* d,
-                                                   int n) { on_announce(d, n); });
-  transport_.subscribe(protocol::kCreated, [this](const std::string&, const std::uint8_t* d,
-                                                  int n) { on_created(d, n); });
-  transport_.subscribe(protocol::kResult, [this](const std::string&, const std::uint8_t* d, int n) {
-    on_result(d, n);
-  });
-  transport_.subscribe(protocol::kError, [this](const std::string&, const std::uint8_t* d, int n) {
-    on_error(d, n);
-  });
+  transport_.subscribe_to<olympics::server_announce_t>(
+      protocol::kAnnounce,
+      [this](const std::string&, const olympics::server_announce_t& a) { on_announce(a); });
+  transport_.subscribe_to<olympics::match_created_t>(
+      protocol::kCreated,
+      [this](const std::string&, const olympics::match_created_t& c) { on_created(c); });
+  transport_.subscribe_to<olympics::match_result_t>(
+      protocol::kResult,
+      [this](const std::string&, const olympics::match_result_t& r) { on_result(r); });
+  transport_.subscribe_to<olympics::error_t>(
+      protocol::kError, [this](const std::string&, const olympics::error_t& e) { on_error(e); });
   games_ = store_.games(spec_.name);
   // Games that were on their way when a previous run stopped: find them again (same request id,
   // which the server answers with the same match) and restart their policy workers (a slot that
@@ -73,19 +74,18 @@ Game* TournamentRunner::game_by_request(const std::string& request_id) {
   return nullptr;
 }
 
-void TournamentRunner::on_announce(const std::uint8_t* data, int size) {
-  auto a = protocol::decode<olympics::server_announce_t>(data, size);
-  if (!a) return;
+void TournamentRunner::on_announce(const olympics::server_announce_t& announce) {
   if (!settings_.servers.empty() && std::find(settings_.servers.begin(), settings_.servers.end(),
-                                              a->server_id) == settings_.servers.end())
+                                              announce.server_id) == settings_.servers.end())
     return;
-  if (std::find(a->sports.begin(), a->sports.end(), spec_.sport) == a->sports.end()) {
+  if (std::find(announce.sports.begin(), announce.sports.end(), spec_.sport) ==
+      announce.sports.end()) {
     std::string offered;
-    for (const auto& sport : a->sports) offered += (offered.empty() ? "" : ", ") + sport;
-    other_servers_[a->server_id] = offered;
+    for (const auto& sport : announce.sports) offered += (offered.empty() ? "" : ", ") + sport;
+    other_servers_[announce.server_id] = offered;
     return;
   }
-  servers_[a->server_id] = {Clock::now(), a->capacity - a->active_matches};
+  servers_[announce.server_id] = {Clock::now(), announce.capacity - announce.active_matches};
 }
 
 // Asks the scheduler for more games when another could start; false once it has finished and
@@ -183,14 +183,12 @@ void TournamentRunner::keep_in_touch() {
   }
 }
 
-void TournamentRunner::on_created(const std::uint8_t* data, int size) {
-  auto c = protocol::decode<olympics::match_created_t>(data, size);
-  if (!c) return;
-  Game* g = game_by_request(c->request_id);
+void TournamentRunner::on_created(const olympics::match_created_t& created) {
+  Game* g = game_by_request(created.request_id);
   if (!g) return;
   InFlight& f = in_flight_[g->index];
   if (!f.slot_teams.empty()) return;  // a repeated answer
-  std::vector<int> teams(c->slot_team.begin(), c->slot_team.end());
+  std::vector<int> teams(created.slot_team.begin(), created.slot_team.end());
   if (std::count(teams.begin(), teams.end(), 0) == 0 ||
       std::count(teams.begin(), teams.end(), 1) == 0 ||
       std::any_of(teams.begin(), teams.end(), [](int t) { return t < 0 || t > 1; }))
@@ -198,7 +196,7 @@ void TournamentRunner::on_created(const std::uint8_t* data, int size) {
                 " has other teams (choose 1v1, 2v2, ...)");
   f.slot_teams = teams;
   if (g->match_id.empty()) {
-    g->match_id = c->match_id;
+    g->match_id = created.match_id;
     save(*g);  // before the workers start, so a restart knows which match to look for
   }
   if (!f.workers_started) start_workers(*g);
@@ -206,16 +204,14 @@ void TournamentRunner::on_created(const std::uint8_t* data, int size) {
 
 // A server refused a game's request: a bad tournament spec (unknown sport or mode, a bad
 // setting) ends the run; a full server is asked again later.
-void TournamentRunner::on_error(const std::uint8_t* data, int size) {
-  auto e = protocol::decode<olympics::error_t>(data, size);
-  if (!e) return;
+void TournamentRunner::on_error(const olympics::error_t& error) {
   for (auto& g : games_) {
-    if (g.status != GameStatus::Dispatched || g.server_id != e->server_id ||
-        e->message.rfind("request " + g.request_id + ":", 0) != 0)
+    if (g.status != GameStatus::Dispatched || g.server_id != error.server_id ||
+        error.message.rfind("request " + g.request_id + ":", 0) != 0)
       continue;
-    if (e->code == "FULL") return retry(g, e->message);
-    return stop("server " + e->server_id + " refused game " + std::to_string(g.index) + ": " +
-                e->code + ": " + e->message);
+    if (error.code == "FULL") return retry(g, error.message);
+    return stop("server " + error.server_id + " refused game " + std::to_string(g.index) + ": " +
+                error.code + ": " + error.message);
   }
 }
 
@@ -266,16 +262,14 @@ void TournamentRunner::assign_live(const Game& g) {
   }
 }
 
-void TournamentRunner::on_result(const std::uint8_t* data, int size) {
-  auto r = protocol::decode<olympics::match_result_t>(data, size);
-  if (!r) return;
+void TournamentRunner::on_result(const olympics::match_result_t& result) {
   for (auto& g : games_) {
-    if (g.status != GameStatus::Dispatched || g.match_id != r->match_id) continue;
-    if (r->reason.rfind("cancelled", 0) == 0) return retry(g, r->reason);
+    if (g.status != GameStatus::Dispatched || g.match_id != result.match_id) continue;
+    if (result.reason.rfind("cancelled", 0) == 0) return retry(g, result.reason);
     g.status = GameStatus::Done;
-    g.home_score = r->winner_team == 0 ? 1.0 : r->winner_team == 1 ? 0.0 : 0.5;
-    g.reason = r->reason;
-    g.ticks = r->ticks;
+    g.home_score = result.winner_team == 0 ? 1.0 : result.winner_team == 1 ? 0.0 : 0.5;
+    g.reason = result.reason;
+    g.ticks = result.ticks;
     save(g);
     in_flight_.erase(g.index);
     show_progress();

@@ -12,6 +12,10 @@
 #include <vector>
 
 #include "league_store.h"
+#include "olympics/error_t.hpp"
+#include "olympics/match_created_t.hpp"
+#include "olympics/match_result_t.hpp"
+#include "olympics/server_announce_t.hpp"
 #include "process.h"
 #include "scheduler.h"
 #include "transport.h"
@@ -56,10 +60,10 @@ class TournamentRunner {
 
   bool schedule_more();
   void dispatch();
-  void on_created(const std::uint8_t* data, int size);
-  void on_result(const std::uint8_t* data, int size);
-  void on_announce(const std::uint8_t* data, int size);
-  void on_error(const std::uint8_t* data, int size);
+  void on_created(const olympics::match_created_t& created);
+  void on_result(const olympics::match_result_t& result);
+  void on_announce(const olympics::server_announce_t& announce);
+  void on_error(const olympics::error_t& error);
   void stop(const std::string& why);
   void refuse_if_no_server_offers_the_sport();
   void start_workers(Game& game);

@@ -38,7 +38,8 @@ int serve(server::ServerConfig config) {
               config.transport.drop_rate > 0 ? " [TEST: dropping datagrams]" : "");
   std::fflush(stdout);
   host.run(g_stop);
-  std::printf("stopped after %ld matches\n", host.finished_matches());
+  std::printf("stopped after %ld matches; refused %ld malformed messages\n",
+              host.finished_matches(), transport.malformed());
   return 0;
 }
 

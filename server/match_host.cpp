@@ -59,6 +59,7 @@ int MatchHost::active_matches() const {
 
 void MatchHost::error(const std::string& match_id, const std::string& client_id,
                       const std::string& code, const std::string& message) {
+  if (code == "MALFORMED" && !transport_.may_complain()) return;
   olympics::error_t e;
   e.protocol_version = protocol::kProtocolVersion;
   e.server_id = settings_.server_id;
@@ -74,22 +75,26 @@ void MatchHost::error(const std::string& match_id, const std::string& client_id,
 void MatchHost::run(const std::atomic<bool>& stop) {
   transport_.subscribe(protocol::kRequest, [this](const std::string&, const std::uint8_t* d,
                                                   int n) { on_request(d, n); });
-  transport_.subscribe(protocol::kAnnounce, [this](const std::string&, const std::uint8_t* d,
-                                                   int n) { on_announce(d, n); });
-  transport_.subscribe(
-      protocol::kJoin, [this](const std::string& ch, const std::uint8_t* d, int n) {
-        auto join = protocol::decode<olympics::join_t>(d, n);
-        if (!join)
-          return error("", "", "MALFORMED",
-                       "could not decode a join_t of " + std::to_string(n) +
-                           " bytes: truncated, corrupted, or from another protocol "
-                           "version; upgrade the client");
-        route(join->match_id, ch, d, n, join->client_id);
-      });
+  transport_.subscribe_to<olympics::server_announce_t>(
+      protocol::kAnnounce,
+      [this](const std::string&, const olympics::server_announce_t& a) { on_announce(a); });
+  transport_.subscribe(protocol::kJoin, [this](const std::string& ch, const std::uint8_t* d,
+                                               int n) {
+    auto join = protocol::decode<olympics::join_t>(d, n);
+    if (!join) {
+      transport_.count_malformed();
+      return error("", "", "MALFORMED",
+                   "could not decode a join_t of " + std::to_string(n) +
+                       " bytes: truncated, corrupted, or from another protocol version; upgrade "
+                       "the client");
+    }
+    route(join->match_id, ch, d, n, join->client_id);
+  });
   transport_.subscribe(protocol::kHeartbeat,
                        [this](const std::string& ch, const std::uint8_t* d, int n) {
-                         if (auto beat = protocol::decode<olympics::heartbeat_t>(d, n))
-                           route(beat->match_id, ch, d, n, beat->client_id);
+                         auto beat = protocol::decode<olympics::heartbeat_t>(d, n);
+                         if (!beat) return transport_.count_malformed();
+                         route(beat->match_id, ch, d, n, beat->client_id);
                        });
   transport_.subscribe(std::string(protocol::kActPrefix) + ".*",
                        [this](const std::string& ch, const std::uint8_t* d, int n) {
@@ -122,11 +127,10 @@ void MatchHost::announce() {
   transport_.publish(protocol::kAnnounce, a);
 }
 
-void MatchHost::on_announce(const std::uint8_t* data, int size) {
-  auto a = protocol::decode<olympics::server_announce_t>(data, size);
-  if (!a || a->server_id == settings_.server_id) return;
+void MatchHost::on_announce(const olympics::server_announce_t& a) {
+  if (a.server_id == settings_.server_id) return;
   std::lock_guard lock(routes_mutex_);
-  peers_[a->server_id] = {std::chrono::steady_clock::now(), a->capacity - a->active_matches};
+  peers_[a.server_id] = {std::chrono::steady_clock::now(), a.capacity - a.active_matches};
 }
 
 // Several servers on one network all hear a request addressed to nobody; the one with the
@@ -143,10 +147,12 @@ bool MatchHost::should_take_unaddressed_request() {
 
 void MatchHost::on_request(const std::uint8_t* data, int size) {
   auto req = protocol::decode<olympics::match_request_t>(data, size);
-  if (!req)
+  if (!req) {
+    transport_.count_malformed();
     return error("", "", "MALFORMED",
                  "could not decode a match_request_t of " + std::to_string(size) +
                      " bytes: truncated, corrupted, or from another protocol version");
+  }
   if (!req->server_id.empty() && req->server_id != settings_.server_id) return;
   if (req->server_id.empty() && !should_take_unaddressed_request()) return;
   if (auto v = protocol::version_mismatch(req->protocol_version))

@@ -18,6 +18,7 @@
 #include "match_runtime.h"
 #include "olympics/match_created_t.hpp"
 #include "olympics/match_result_t.hpp"
+#include "olympics/server_announce_t.hpp"
 #include "results_store.h"
 #include "transport.h"
 
@@ -65,7 +66,7 @@ class MatchHost {
   void on_request(const std::uint8_t* data, int size);
   void route(const std::string& match_id, const std::string& channel, const std::uint8_t* data,
              int size, const std::string& client_id);
-  void on_announce(const std::uint8_t* data, int size);
+  void on_announce(const olympics::server_announce_t& announce);
   bool should_take_unaddressed_request();
   void announce();
   void worker_loop(Worker& worker);

@@ -109,6 +109,8 @@ void MatchRuntime::handle(const std::string& channel, const std::vector<std::uin
                           Clock::time_point now) {
   if (log_) log_->write(channel, bytes.data(), static_cast<int>(bytes.size()));
   auto malformed = [&](const char* type) {
+    transport_.count_malformed();
+    if (!transport_.may_complain()) return;
     error("", "MALFORMED",
           "could not decode a " + std::string(type) + " of " + std::to_string(bytes.size()) +
               " bytes on " + channel +

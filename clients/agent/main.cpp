@@ -22,7 +22,7 @@ namespace {
 // With --calls: the referee's decisions and the score as they happen (from the observation's
 // info, so any agent of the match can follow it live). Ball contacts, hits and punches are left
 // out: they come many a second.
-void print_calls(const olympics::client::Observation& obs) {
+void print_calls(const olympics::client::Observation& obs) try {
   if (obs.info.empty()) return;
   const auto info = nlohmann::json::parse(obs.info, nullptr, false);
   if (!info.is_object() || !info.contains("events")) return;
@@ -45,6 +45,8 @@ void print_calls(const olympics::client::Observation& obs) {
     std::printf("%s  %s\n", line.c_str(), score.c_str());
   }
   std::fflush(stdout);
+} catch (const nlohmann::json::exception&) {
+  // Info of another shape than the referee writes: nothing to print.
 }
 
 // What the policies are told of the match they are about to play.

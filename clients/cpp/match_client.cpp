@@ -31,6 +31,14 @@ std::chrono::steady_clock::duration seconds(double s) {
       std::chrono::duration<double>(s));
 }
 
+// A match description a policy can rely on: the blocks add up to the observation, sizes are sane.
+bool described_consistently(const olympics::match_created_t& m) {
+  long blocks = 0;
+  for (int size : m.obs_block_sizes) blocks += size;
+  return m.obs_size > 0 && m.obs_size <= 1'000'000 && blocks == m.obs_size && m.action_size > 0 &&
+         m.action_size <= 100'000 && m.control_hz > 0;
+}
+
 }  // namespace
 
 bool Observation::all_done() const {
@@ -43,40 +51,38 @@ MatchClient::MatchClient(const ClientOptions& options)
     : options_(options),
       client_id_(options.agent_name + "-" + random_id()),
       transport_({options.lcm_url, options.drop_rate, options.drop_seed}) {
-  transport_.subscribe(
-      protocol::kCreated, [this](const std::string&, const std::uint8_t* d, int n) {
-        auto m = protocol::decode<olympics::match_created_t>(d, n);
-        if (m && !pending_request_id_.empty() && m->request_id == pending_request_id_)
-          created_ = *m;
+  transport_.subscribe_to<olympics::match_created_t>(
+      protocol::kCreated, [this](const std::string&, const olympics::match_created_t& m) {
+        if (!pending_request_id_.empty() && m.request_id == pending_request_id_) created_ = m;
       });
-  transport_.subscribe(protocol::kJoinReply,
-                       [this](const std::string&, const std::uint8_t* d, int n) {
-                         auto m = protocol::decode<olympics::join_reply_t>(d, n);
-                         if (!m || m->client_id != client_id_) return;
-                         join_accepted_ = m->accepted;
-                         join_refusal_ = m->reason;
-                         if (m->accepted) match_ = m->match;
-                       });
-  transport_.subscribe(protocol::kError, [this](const std::string&, const std::uint8_t* d, int n) {
-    auto m = protocol::decode<olympics::error_t>(d, n);
-    if (m &&
-        (m->client_id == client_id_ || (m->client_id.empty() && !pending_request_id_.empty() &&
-                                        m->message.find(pending_request_id_) != std::string::npos)))
-      errors_.push_back(*m);
-  });
-  transport_.subscribe(protocol::kLeague, [this](const std::string&, const std::uint8_t* d, int n) {
-    auto a = protocol::decode<olympics::league_assignment_t>(d, n);
-    if (!a) return;
-    for (const auto& known : assigned_matches_)
-      if (known == a->match_id) return;
-    for (const auto& queued : assignments_)
-      if (queued.match_id == a->match_id) return;
-    assignments_.push_back({a->league, a->learner, a->match_id, a->opponent, a->game, a->slots});
-  });
-  transport_.subscribe(protocol::kResult, [this](const std::string&, const std::uint8_t* d, int n) {
-    auto m = protocol::decode<olympics::match_result_t>(d, n);
-    if (m && joined_ && m->match_id == match_.match_id) result_ = *m;
-  });
+  transport_.subscribe_to<olympics::join_reply_t>(
+      protocol::kJoinReply, [this](const std::string&, const olympics::join_reply_t& m) {
+        if (m.client_id != client_id_) return;
+        if (m.accepted && !described_consistently(m.match)) return transport_.count_malformed();
+        join_accepted_ = m.accepted;
+        join_refusal_ = m.reason;
+        if (m.accepted) match_ = m.match;
+      });
+  transport_.subscribe_to<olympics::error_t>(
+      protocol::kError, [this](const std::string&, const olympics::error_t& m) {
+        const bool about_my_request = m.client_id.empty() && !pending_request_id_.empty() &&
+                                      m.message.find(pending_request_id_) != std::string::npos;
+        if ((m.client_id == client_id_ || about_my_request) && errors_.size() < kMaxQueued)
+          errors_.push_back(m);
+      });
+  transport_.subscribe_to<olympics::league_assignment_t>(
+      protocol::kLeague, [this](const std::string&, const olympics::league_assignment_t& a) {
+        for (const auto& known : assigned_matches_)
+          if (known == a.match_id) return;
+        for (const auto& queued : assignments_)
+          if (queued.match_id == a.match_id) return;
+        if (assignments_.size() >= kMaxQueued) assignments_.erase(assignments_.begin());
+        assignments_.push_back({a.league, a.learner, a.match_id, a.opponent, a.game, a.slots});
+      });
+  transport_.subscribe_to<olympics::match_result_t>(
+      protocol::kResult, [this](const std::string&, const olympics::match_result_t& m) {
+        if (joined_ && m.match_id == match_.match_id) result_ = m;
+      });
 }
 
 void MatchClient::pump(Clock::time_point until) {
@@ -183,23 +189,24 @@ olympics::match_created_t MatchClient::join(const std::string& match_id,
   last_returned_tick_ = -1;
   last_action_bytes_.clear();
   if (obs_subscription_ >= 0) transport_.unsubscribe(obs_subscription_);
-  obs_subscription_ = transport_.subscribe(
-      match_.obs_channel, [this](const std::string&, const std::uint8_t* d, int n) {
-        auto b = protocol::decode<olympics::observation_batch_t>(d, n);
-        if (!b || b->client_id != client_id_ || b->match_id != match_.match_id ||
-            b->tick <= last_returned_tick_)
+  obs_subscription_ = transport_.subscribe_to<olympics::observation_batch_t>(
+      match_.obs_channel, [this](const std::string&, const olympics::observation_batch_t& b) {
+        if (b.client_id != client_id_ || b.match_id != match_.match_id ||
+            b.tick <= last_returned_tick_)
           return;  // ours, and new
-        if (latest_ && latest_->tick >= b->tick) return;
+        // The shape the match described: another one would send a policy out of bounds.
+        if (b.slots != slots_ || b.obs_size != match_.obs_size) return transport_.count_malformed();
+        if (latest_ && latest_->tick >= b.tick) return;
         Observation o;
-        o.tick = b->tick;
-        o.slots = b->slots;
-        o.obs = b->obs;
-        o.reward = b->reward;
-        o.term_names = b->term_names;
-        o.terms = b->terms;
-        o.done.assign(b->done.begin(), b->done.end());
-        o.truncated.assign(b->truncated.begin(), b->truncated.end());
-        o.info = b->info;
+        o.tick = b.tick;
+        o.slots = b.slots;
+        o.obs = b.obs;
+        o.reward = b.reward;
+        o.term_names = b.term_names;
+        o.terms = b.terms;
+        o.done.assign(b.done.begin(), b.done.end());
+        o.truncated.assign(b.truncated.begin(), b.truncated.end());
+        o.info = b.info;
         latest_ = std::move(o);
       });
   last_heartbeat_ = Clock::now();

@@ -122,6 +122,7 @@ class MatchClient {
   std::vector<olympics::error_t> errors_;
   Clock::time_point last_heartbeat_, last_send_;
   static constexpr double kMaxResendGapS = 0.25;
+  static constexpr size_t kMaxQueued = 1000;  // errors, assignments kept until taken
   double resend_gap_s_ = 0.03;
 };
 

@@ -119,7 +119,10 @@ class OlympicsParallelEnv:
 
     def _unpack(self, batch):
         self._tick = batch["tick"]
-        info = json.loads(batch["info"]) if batch["info"] else {}
+        try:
+            info = json.loads(batch["info"]) if batch["info"] else {}
+        except ValueError:  # not the referee's JSON: the observation itself is still good
+            info = {}
         observations, rewards, terminations, truncations, infos = {}, {}, {}, {}, {}
         for i, slot in enumerate(batch["slots"]):
             agent = f"slot_{slot}"
