@@ -75,7 +75,7 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
   const int cores = static_cast<int>(std::thread::hardware_concurrency());
   const bool pin = o.pin && cores > o.workers;
   if (pin) pin_this_thread(o.workers, cores - 1);
-  protocol::Transport server_transport({url});
+  protocol::Transport server_transport{protocol::TransportOptions(url)};
   server::HostSettings settings;
   settings.server_id = "bench";
   settings.workers = o.workers;

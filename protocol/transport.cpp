@@ -10,11 +10,18 @@ constexpr int kQueueCapacity = 100000;
 }
 
 struct Transport::Subscription {
+  Transport* transport = nullptr;
   RawHandler handler;
   lcm::Subscription* lcm_subscription = nullptr;
   void on_message(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
-    handler(channel, static_cast<const std::uint8_t*>(rbuf->data),
-            static_cast<int>(rbuf->data_size));
+    const auto* data = static_cast<const std::uint8_t*>(rbuf->data);
+    const int size = static_cast<int>(rbuf->data_size);
+    if (transport->auth_ && !transport->auth_->verify(channel, data, size)) {
+      ++transport->unauthenticated_;
+      if (transport->on_unauthenticated_) transport->on_unauthenticated_(channel, data, size);
+      return;
+    }
+    handler(channel, data, size);
   }
 };
 
@@ -22,7 +29,8 @@ Transport::Transport(const TransportOptions& options)
     : url_(options.url.empty() ? kDefaultLcmUrl : options.url),
       lcm_(url_),
       drop_rate_(options.drop_rate),
-      drop_rng_(options.drop_seed) {
+      drop_rng_(options.drop_seed),
+      auth_(options.auth) {
   if (!lcm_.good())
     throw std::runtime_error(
         "LCM could not start on " + url_ +
@@ -35,6 +43,7 @@ Transport::~Transport() = default;
 
 int Transport::subscribe(const std::string& channel, RawHandler handler) {
   auto sub = std::make_unique<Subscription>();
+  sub->transport = this;
   sub->handler = std::move(handler);
   sub->lcm_subscription = lcm_.subscribe(channel, &Subscription::on_message, sub.get());
   // LCM drops messages beyond 30 queued per subscription by default; a server with many matches
@@ -57,6 +66,11 @@ void Transport::publish_raw(const std::string& channel, const std::uint8_t* data
   if (drop_rate_ > 0 && std::uniform_real_distribution<double>(0, 1)(drop_rng_) < drop_rate_) {
     ++dropped_;
     return;
+  }
+  if (auth_) {
+    signing_buffer_.assign(data, data + size);
+    auth_->sign(channel, signing_buffer_.data(), size);
+    data = signing_buffer_.data();
   }
   lcm_.publish(channel, data, static_cast<unsigned>(size));
 }

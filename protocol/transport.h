@@ -1,5 +1,6 @@
-// LCM with what the protocol needs around it: raw subscriptions (so undecodable packets can be
-// answered with an error instead of silently dropped), thread-safe publishing, and, for tests,
+// LCM with what the protocol needs around it: raw and decoded subscriptions (undecodable packets
+// are counted, and can be answered with an error instead of silently dropped), signing and
+// checking of every message with a deployment secret, thread-safe publishing, and, for tests,
 // injected datagram loss.
 #pragma once
 
@@ -14,15 +15,23 @@
 #include <string>
 #include <vector>
 
+#include "auth.h"
 #include "rate_limit.h"
 #include "wire_check.h"
 
 namespace olympics::protocol {
 
 struct TransportOptions {
+  TransportOptions(std::string lcm_url = "", double drop = 0.0, std::uint64_t seed = 1,
+                   std::shared_ptr<const Authenticator> authenticator = nullptr)
+      : url(std::move(lcm_url)), drop_rate(drop), drop_seed(seed), auth(std::move(authenticator)) {}
   std::string url;         // empty: kDefaultLcmUrl
   double drop_rate = 0.0;  // test flag: share of published messages silently dropped
   std::uint64_t drop_seed = 1;
+  // With a deployment secret, every message sent is signed and every message received must be:
+  // unsigned and forged ones are dropped and counted (unauthenticated()). Without one, nothing is
+  // signed or checked (loopback experiments only).
+  std::shared_ptr<const Authenticator> auth;
 };
 
 class Transport {
@@ -53,6 +62,11 @@ class Transport {
   long dropped() const { return dropped_; }
   // Received messages refused: they did not decode (truncated, corrupt, another version).
   long malformed() const { return malformed_; }
+  // Received messages dropped for a missing or wrong signature (with a secret only).
+  long unauthenticated() const { return unauthenticated_; }
+  bool authenticating() const { return auth_ != nullptr; }
+  // Called (on the receiving thread) for each unauthenticated message dropped.
+  void on_unauthenticated(RawHandler handler) { on_unauthenticated_ = std::move(handler); }
   void count_malformed() { ++malformed_; }
   // Whether an answer to bad input (a MALFORMED error) may go out now: at most 20 a second from
   // one process, so that a flood of bad datagrams is not answered by a flood of errors.
@@ -66,7 +80,10 @@ class Transport {
   double drop_rate_;
   std::mt19937_64 drop_rng_;
   std::mutex publish_mutex_;
-  std::atomic<long> published_{0}, dropped_{0}, malformed_{0};
+  std::atomic<long> published_{0}, dropped_{0}, malformed_{0}, unauthenticated_{0};
+  std::shared_ptr<const Authenticator> auth_;
+  RawHandler on_unauthenticated_;
+  std::vector<std::uint8_t> signing_buffer_;  // under publish_mutex_
   std::vector<std::unique_ptr<Subscription>> subscriptions_;
   RateLimiter complaints_{20};
 };

@@ -93,6 +93,8 @@ int main(int argc, char** argv) {
   run->add_option("--servers", runner.servers, "server ids to use (default: any)")->delimiter(',');
   run->add_option("--parallel", runner.parallel, "games at once")->check(CLI::PositiveNumber);
   run->add_option("--lcm-url", runner.lcm_url, "LCM provider URL");
+  run->add_option("--secret", runner.secret_file,
+                  "the deployment's secret file (default $OLYMPICS_SECRET_FILE; docs/security.md)");
   run->add_option("--log-dir", runner.log_dir, "policy workers' logs");
   bool quiet = false;
   run->add_flag("--quiet", quiet, "no progress bar");
@@ -124,6 +126,8 @@ int main(int argc, char** argv) {
         ->delimiter(',');
     cmd->add_option("--parallel", runner.parallel, "games at once")->check(CLI::PositiveNumber);
     cmd->add_option("--lcm-url", runner.lcm_url, "LCM provider URL");
+    cmd->add_option("--secret", runner.secret_file,
+                    "the deployment's secret file (default $OLYMPICS_SECRET_FILE)");
     cmd->add_option("--log-dir", runner.log_dir, "policy workers' logs");
     cmd->add_flag("--quiet", quiet, "no progress bar");
   }

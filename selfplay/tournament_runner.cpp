@@ -44,7 +44,7 @@ TournamentRunner::TournamentRunner(LeagueStore& store, TournamentSpec spec, Runn
       store_(store),
       spec_(std::move(spec)),
       settings_(std::move(settings)),
-      transport_({settings_.lcm_url}) {
+      transport_({settings_.lcm_url, 0.0, 1, protocol::load_secret(settings_.secret_file)}) {
   transport_.subscribe_to<olympics::server_announce_t>(
       protocol::kAnnounce,
       [this](const std::string&, const olympics::server_announce_t& a) { on_announce(a); });
@@ -239,6 +239,8 @@ void TournamentRunner::start_workers(Game& g) {
                                      "--timeout",
                                      "60"};
     if (!settings_.lcm_url.empty()) argv.insert(argv.end(), {"--lcm-url", settings_.lcm_url});
+    if (!settings_.secret_file.empty())
+      argv.insert(argv.end(), {"--secret", settings_.secret_file});
     f.workers.push_back(std::make_unique<Process>(
         argv, settings_.log_dir + "/" + g.match_id + "-team" + std::to_string(team) + ".log"));
   }

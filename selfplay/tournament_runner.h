@@ -30,6 +30,7 @@ struct RunnerSettings {
   std::string log_dir = "/tmp";      // policy workers' output
   double server_silence_s = 5;       // a server not announcing this long is gone
   bool progress = true;              // a progress bar on stderr
+  std::string secret_file;           // "" = $OLYMPICS_SECRET_FILE, or none; its workers get it too
 };
 
 // The slots of `team` from a match's slot-to-team mapping (match_created_t.slot_team), in slot

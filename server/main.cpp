@@ -27,6 +27,7 @@ void on_signal(int) { g_stop = true; }
 using namespace olympics;
 
 int serve(server::ServerConfig config) {
+  config.transport.auth = protocol::load_secret(config.secret_file);
   auto store = server::open_results_store(config.results);
   protocol::Transport transport(config.transport);
   server::MatchHost host(config.host, transport, *store);
@@ -36,10 +37,16 @@ int serve(server::ServerConfig config) {
               protocol::kSoftwareVersion, protocol::kProtocolVersion, config.host.server_id.c_str(),
               transport.url().c_str(), store->describe().c_str(),
               config.transport.drop_rate > 0 ? " [TEST: dropping datagrams]" : "");
+  if (transport.authenticating())
+    std::printf("messages are signed and checked with the deployment secret\n");
+  else
+    std::printf(
+        "NO SECRET: messages are neither signed nor checked; anyone on the network can "
+        "act for any slot. For loopback experiments only (docs/security.md: --secret)\n");
   std::fflush(stdout);
   host.run(g_stop);
-  std::printf("stopped after %ld matches; refused %ld malformed messages\n",
-              host.finished_matches(), transport.malformed());
+  std::printf("stopped after %ld matches; refused %ld malformed and %ld unauthenticated messages\n",
+              host.finished_matches(), transport.malformed(), transport.unauthenticated());
   return 0;
 }
 
@@ -166,31 +173,38 @@ int main(int argc, char** argv) {
   std::string config_file;
 
   auto* serve_cmd = app.add_subcommand("serve", "host matches until interrupted");
+  server::ServerFlags flags;
   serve_cmd->add_option("--config", config_file, "TOML config file (flags override it)");
-  serve_cmd->add_option("--id", config.host.server_id, "server id (default host-pid)");
-  serve_cmd->add_option("--lcm-url", config.transport.url, "LCM provider URL");
-  serve_cmd->add_option("--capacity", config.host.capacity, "matches hosted at once")
-      ->check(CLI::PositiveNumber);
-  serve_cmd->add_option("--workers", config.host.workers,
-                        "threads stepping matches (0: one per core)");
-  serve_cmd->add_option("--results", config.results, "SQLite file or postgresql:// URL");
-  serve_cmd->add_option("--replay-dir", config.host.replay_dir, "write <match>.replay files here");
-  serve_cmd->add_flag("--lcm-logs", config.host.lcm_logs,
-                      "also write <match>.lcmlog (lcm-logplayer)");
-  double deadline_ms = -1, resend_ms = -1, silent_s = -1, join_s = -1;
-  int missed = -1;
-  serve_cmd->add_option("--action-deadline-ms", deadline_ms,
-                        "sync: how long a tick waits for actions");
-  serve_cmd->add_option("--max-missed-ticks", missed,
+  serve_cmd->add_option("--id", flags.id, "server id (default host-pid)");
+  serve_cmd->add_option("--lcm-url", flags.lcm_url, "LCM provider URL");
+  serve_cmd->add_option("--secret", flags.secret_file,
+                        "the deployment's secret file: sign and check every message "
+                        "(default $OLYMPICS_SECRET_FILE; docs/security.md)");
+  serve_cmd->add_option("--capacity", flags.capacity, "matches hosted at once");
+  serve_cmd->add_option("--workers", flags.workers, "threads stepping matches (0: one per core)");
+  serve_cmd->add_option("--results", flags.results, "SQLite file or postgresql:// URL");
+  serve_cmd->add_option("--replay-dir", flags.replay_dir, "write <match>.replay files here");
+  serve_cmd->add_flag("--lcm-logs", flags.lcm_logs, "also write <match>.lcmlog (lcm-logplayer)");
+  serve_cmd->add_option("--action-deadline-ms", flags.action_deadline_ms,
+                        "how long a sync tick waits for actions");
+  serve_cmd->add_option("--max-missed-ticks", flags.max_missed_ticks,
                         "sync: missed ticks in a row before a forfeit");
-  serve_cmd->add_option("--resend-ms", resend_ms, "sync: republish interval while waiting");
-  serve_cmd->add_option("--silent-timeout-s", silent_s, "forfeit a client silent this long");
-  serve_cmd->add_option("--join-timeout-s", join_s, "cancel a match not full after this long");
+  serve_cmd->add_option("--resend-ms", flags.resend_ms, "sync: republish interval while waiting");
+  serve_cmd->add_option("--silent-timeout-s", flags.silent_timeout_s,
+                        "forfeit a client silent this long");
+  serve_cmd->add_option("--join-timeout-s", flags.join_timeout_s,
+                        "cancel a match not full after this long");
   bool dry_run = false;
-  serve_cmd->add_flag("--dry-run", dry_run, "check the config, print the settings, exit");
-  serve_cmd->add_option("--drop-rate", config.transport.drop_rate,
+  serve_cmd->add_flag("--dry-run", dry_run,
+                      "check the config (ranges, the secret, the results folder), print it, exit");
+  serve_cmd->add_option("--drop-rate", flags.drop_rate,
                         "TEST ONLY: drop this share of sent datagrams");
-  serve_cmd->add_option("--drop-seed", config.transport.drop_seed, "TEST ONLY: seed of the drops");
+  serve_cmd->add_option("--drop-seed", flags.drop_seed, "TEST ONLY: seed of the drops");
+
+  std::string secret_path;
+  auto* secret_cmd = app.add_subcommand(
+      "secret", "write a new random deployment secret to FILE (mode 600; never overwrites)");
+  secret_cmd->add_option("file", secret_path, "where")->required();
 
   app.add_subcommand("sports", "list the sports and their modes");
   std::string sport_name, mode;
@@ -216,45 +230,25 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     if (*serve_cmd) {
-      if (!config_file.empty()) {
-        // The file first, then flags given on the command line win.
-        server::ServerConfig from_file = server::default_server_config();
-        server::load_server_config_file(config_file, from_file);
-        auto flags = config;
-        config = from_file;
-        if (serve_cmd->count("--id")) config.host.server_id = flags.host.server_id;
-        if (serve_cmd->count("--lcm-url")) config.transport.url = flags.transport.url;
-        if (serve_cmd->count("--capacity")) config.host.capacity = flags.host.capacity;
-        if (serve_cmd->count("--workers")) config.host.workers = flags.host.workers;
-        if (serve_cmd->count("--results")) config.results = flags.results;
-        if (serve_cmd->count("--replay-dir")) config.host.replay_dir = flags.host.replay_dir;
-        if (serve_cmd->count("--lcm-logs")) config.host.lcm_logs = flags.host.lcm_logs;
-        if (serve_cmd->count("--drop-rate")) config.transport.drop_rate = flags.transport.drop_rate;
-        if (serve_cmd->count("--drop-seed")) config.transport.drop_seed = flags.transport.drop_seed;
-      }
-      for (auto* r : {&config.host.sync, &config.host.realtime}) {
-        if (deadline_ms >= 0) r->action_deadline_s = deadline_ms / 1000.0;
-        if (resend_ms > 0) r->resend_interval_s = resend_ms / 1000.0;
-        if (silent_s > 0) r->silent_timeout_s = silent_s;
-        if (join_s > 0) r->join_timeout_s = join_s;
-      }
-      if (missed > 0) config.host.sync.max_missed_ticks = missed;
+      // The file first (if any), then the flags given on the command line win; then every
+      // value is checked, so that nothing that would break matches gets to run.
+      if (!config_file.empty()) server::load_server_config_file(config_file, config);
+      server::apply_flags(flags, config);
+      server::validate_server_config(config);
       if (dry_run) {
-        std::printf(
-            "config ok: id %s, lcm %s, capacity %d, workers %d, results %s, replays %s\n"
-            "sync: deadline %.0f ms, %d missed ticks, resend %.0f ms, silent %.1f s, join %.0f s\n"
-            "realtime: %d missed ticks, silent %.1f s\n",
-            config.host.server_id.c_str(),
-            config.transport.url.empty() ? "(default)" : config.transport.url.c_str(),
-            config.host.capacity, config.host.workers, config.results.c_str(),
-            config.host.replay_dir.empty() ? "(none)" : config.host.replay_dir.c_str(),
-            config.host.sync.action_deadline_s * 1000, config.host.sync.max_missed_ticks,
-            config.host.sync.resend_interval_s * 1000, config.host.sync.silent_timeout_s,
-            config.host.sync.join_timeout_s, config.host.realtime.max_missed_ticks,
-            config.host.realtime.silent_timeout_s);
+        server::check_server_resources(config);
+        std::printf("%s", server::describe_server_config(config).c_str());
         return 0;
       }
       return serve(config);
+    }
+    if (*secret_cmd) {
+      protocol::write_new_secret(secret_path);
+      std::printf(
+          "wrote a new secret to %s (readable by you only); give every server, league and "
+          "agent of the deployment --secret %s\n",
+          secret_path.c_str(), secret_path.c_str());
+      return 0;
     }
     if (app.got_subcommand("sports")) {
       for (const auto& name : sports::sport_names()) {

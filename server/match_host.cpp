@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "channels.h"
+#include "olympics/action_batch_t.hpp"
 #include "olympics/error_t.hpp"
 #include "olympics/heartbeat_t.hpp"
 #include "olympics/join_t.hpp"
@@ -18,11 +19,25 @@
 namespace olympics::server {
 namespace {
 constexpr size_t kRememberedResults = 1000;
+
+std::string base36(std::uint64_t v) {
+  const char* digits = "0123456789abcdefghijklmnopqrstuvwxyz";
+  std::string out;
+  do out.insert(out.begin(), digits[v % 36]), v /= 36;
+  while (v);
+  return out;
+}
 constexpr double kPeerTimeoutS = 3.0;
 }  // namespace
 
 MatchHost::MatchHost(HostSettings settings, protocol::Transport& transport, ResultsStore& store)
-    : settings_(std::move(settings)), transport_(transport), store_(store) {
+    : settings_(std::move(settings)),
+      transport_(transport),
+      store_(store),
+      boot_us_(std::chrono::duration_cast<std::chrono::microseconds>(
+                   std::chrono::system_clock::now().time_since_epoch())
+                   .count()),
+      boot_tag_(base36(static_cast<std::uint64_t>(boot_us_ / 1000))) {
   int n = settings_.workers > 0
               ? settings_.workers
               : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
@@ -59,7 +74,9 @@ int MatchHost::active_matches() const {
 
 void MatchHost::error(const std::string& match_id, const std::string& client_id,
                       const std::string& code, const std::string& message) {
-  if (code == "MALFORMED" && !transport_.may_complain()) return;
+  if ((code == "MALFORMED" || code == "UNAUTHENTICATED" || code == "UNKNOWN_MATCH") &&
+      !transport_.may_complain())
+    return;
   olympics::error_t e;
   e.protocol_version = protocol::kProtocolVersion;
   e.server_id = settings_.server_id;
@@ -73,8 +90,35 @@ void MatchHost::error(const std::string& match_id, const std::string& client_id,
 }
 
 void MatchHost::run(const std::atomic<bool>& stop) {
+  // What an earlier run under this id left unfinished (a crash) is recorded as aborted.
+  try {
+    const auto now = std::chrono::duration_cast<std::chrono::seconds>(
+                         std::chrono::system_clock::now().time_since_epoch())
+                         .count();
+    if (int n = store_.abort_unfinished(settings_.server_id, now); n > 0) {
+      std::printf("recorded %d match(es) an earlier run of %s left unfinished as aborted\n", n,
+                  settings_.server_id.c_str());
+      std::fflush(stdout);
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "[server %s] could not record unfinished matches: %s\n",
+                 settings_.server_id.c_str(), e.what());
+  }
   transport_.subscribe(protocol::kRequest, [this](const std::string&, const std::uint8_t* d,
                                                   int n) { on_request(d, n); });
+  // A client without the deployment's secret (or with another) learns why it gets no answer.
+  transport_.on_unauthenticated([this](const std::string& ch, const std::uint8_t* d, int n) {
+    const std::string why =
+        "this server checks signatures: give the client the deployment's secret (--secret FILE "
+        "or $OLYMPICS_SECRET_FILE); unsigned or forged messages are dropped";
+    if (ch == protocol::kJoin) {
+      if (auto join = protocol::decode<olympics::join_t>(d, n))
+        error(join->match_id, join->client_id, "UNAUTHENTICATED", why);
+    } else if (ch == protocol::kRequest) {
+      if (auto req = protocol::decode<olympics::match_request_t>(d, n))
+        error("", "", "UNAUTHENTICATED", "request " + req->request_id + ": " + why);
+    }
+  });
   transport_.subscribe_to<olympics::server_announce_t>(
       protocol::kAnnounce,
       [this](const std::string&, const olympics::server_announce_t& a) { on_announce(a); });
@@ -124,6 +168,9 @@ void MatchHost::announce() {
   a.active_matches = active_matches();
   a.sports = sports::sport_names();
   a.num_sports = static_cast<int>(a.sports.size());
+  a.boot_us = boot_us_;
+  a.refused_malformed = transport_.malformed();
+  a.refused_unauthenticated = transport_.unauthenticated();
   transport_.publish(protocol::kAnnounce, a);
 }
 
@@ -210,7 +257,9 @@ void MatchHost::on_request(const std::uint8_t* data, int size) {
   int worker;
   {
     std::lock_guard lock(routes_mutex_);
-    id.match_id = settings_.server_id + "-" + std::to_string(next_match_number_++);
+    // The boot in the id keeps ids unique across restarts under the same server id.
+    id.match_id =
+        settings_.server_id + "-" + boot_tag_ + "-" + std::to_string(next_match_number_++);
     worker = next_worker_++ % static_cast<int>(workers_.size());
     routes_[id.match_id] = worker;
   }
@@ -220,6 +269,7 @@ void MatchHost::on_request(const std::uint8_t* data, int size) {
   auto runtime =
       std::make_unique<MatchRuntime>(id, req->realtime ? settings_.realtime : settings_.sync,
                                      std::move(game), transport_, std::move(log));
+  note_in_progress(*runtime, id);
   olympics::match_created_t created = runtime->description();
   created.request_id = req->request_id;
   {
@@ -235,6 +285,23 @@ void MatchHost::on_request(const std::uint8_t* data, int size) {
   transport_.publish(protocol::kCreated, created);
 }
 
+void MatchHost::note_in_progress(const MatchRuntime& runtime, const MatchIdentity& id) {
+  StoredMatch m;
+  m.match_id = id.match_id, m.server_id = id.server_id, m.sport = id.sport;
+  m.mode = id.settings.mode, m.seed = static_cast<std::int64_t>(id.settings.seed);
+  m.realtime = id.realtime, m.options = id.settings.options.dump();
+  m.finished_at_unix = std::chrono::duration_cast<std::chrono::seconds>(
+                           std::chrono::system_clock::now().time_since_epoch())
+                           .count();
+  m.participants = runtime.participants();
+  try {
+    store_.note_in_progress(m);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "[%s] could not note the match as in progress: %s\n", id.match_id.c_str(),
+                 e.what());
+  }
+}
+
 void MatchHost::route(const std::string& match_id, const std::string& channel,
                       const std::uint8_t* data, int size, const std::string& client_id) {
   int worker = -1;
@@ -248,10 +315,15 @@ void MatchHost::route(const std::string& match_id, const std::string& channel,
     }
   }
   if (worker < 0) {
-    if (channel == protocol::kHeartbeat) return;
     // Another server's match on a shared network is not ours to refuse.
     if (match_id.rfind(settings_.server_id + "-", 0) != 0) return;
-    return error(match_id, client_id, "UNKNOWN_MATCH",
+    // Ours, but not (or no longer) here: a match of an earlier run of this server. Its client
+    // learns so at once (its id addresses the error), and gives up.
+    std::string to = client_id;
+    if (to.empty())
+      if (auto batch = protocol::decode<olympics::action_batch_t>(data, size))
+        to = batch->client_id;
+    return error(match_id, to, "UNKNOWN_MATCH",
                  "no match \"" + match_id + "\" on server " + settings_.server_id +
                      "; request one on " + protocol::kRequest + " and use the match_id it returns");
   }
@@ -278,6 +350,7 @@ void MatchHost::worker_loop(Worker& w) {
     std::vector<std::string> done;
     for (auto& [match, inbox] : work) {
       for (auto& msg : inbox) match->handle(msg.channel, msg.bytes, Clock::now());
+      if (match->take_started()) note_players(*match);
       next = std::min(next, match->poll(Clock::now()));
       if (match->finished()) {
         on_finished(*match);
@@ -295,12 +368,24 @@ void MatchHost::worker_loop(Worker& w) {
   }
 }
 
+void MatchHost::note_players(const MatchRuntime& match) {
+  try {
+    store_.note_players(match.match_id(), match.participants());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "[%s] could not note the players: %s\n", match.match_id().c_str(),
+                 e.what());
+  }
+}
+
 void MatchHost::on_finished(MatchRuntime& match) {
   try {
     store_.record(match.stored_result());
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "[%s] could not store the result: %s\n", match.match_id().c_str(),
-                 e.what());
+    // The agents hear it (and exit with it) before the result, which they still get.
+    for (const auto& client : match.client_ids())
+      error(match.match_id(), client, "STORE_FAILED",
+            "the result of match " + match.match_id() + " could not be stored in " +
+                store_.describe() + ": " + e.what());
   }
   if (!settings_.replay_dir.empty()) {
     try {

@@ -71,6 +71,8 @@ class MatchHost {
   void announce();
   void worker_loop(Worker& worker);
   void on_finished(MatchRuntime& match);
+  void note_in_progress(const MatchRuntime& match, const MatchIdentity& id);
+  void note_players(const MatchRuntime& match);
   void error(const std::string& match_id, const std::string& client_id, const std::string& code,
              const std::string& message);
 
@@ -88,6 +90,8 @@ class MatchHost {
   std::map<std::string, std::pair<std::chrono::steady_clock::time_point, int>>
       peers_;  // id -> seen, free
   std::atomic<long> finished_count_{0};
+  const std::int64_t boot_us_;  // when this process started: announced
+  const std::string boot_tag_;  // the same in ms, base 36: in match ids
   long next_match_number_ = 1;
   int next_worker_ = 0;
 };

@@ -430,6 +430,28 @@ void MatchRuntime::finish(Clock::time_point now) {
 
 void MatchRuntime::publish_result() { send(protocol::kResult, result_); }
 
+std::vector<StoredParticipant> MatchRuntime::participants() const {
+  std::vector<StoredParticipant> out;
+  for (int s = 0; s < game_->slot_count(); ++s) {
+    const Client* k = slot_owner_[s] >= 0 ? &clients_[slot_owner_[s]] : nullptr;
+    out.push_back(
+        {s, game_->team_of(s), k ? k->agent : "", k ? k->policy : "", k ? k->policy_version : ""});
+  }
+  return out;
+}
+
+bool MatchRuntime::take_started() {
+  if (phase_ == Phase::Joining || start_reported_) return false;
+  start_reported_ = true;
+  return true;
+}
+
+std::vector<std::string> MatchRuntime::client_ids() const {
+  std::vector<std::string> ids;
+  for (const auto& c : clients_) ids.push_back(c.id);
+  return ids;
+}
+
 StoredMatch MatchRuntime::stored_result() const {
   StoredMatch m;
   const auto& r = result_;

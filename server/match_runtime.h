@@ -66,6 +66,11 @@ class MatchRuntime {
   void publish_result();
   const olympics::match_result_t& result() const { return result_; }
   StoredMatch stored_result() const;
+  // Who plays which slot (agents, policies), once every slot is claimed.
+  std::vector<StoredParticipant> participants() const;
+  // True once, the first time it is asked after the match started: the host notes the players.
+  bool take_started();
+  std::vector<std::string> client_ids() const;
   Replay replay() const;
 
  private:
@@ -102,6 +107,7 @@ class MatchRuntime {
   olympics::match_created_t description_;
 
   Phase phase_ = Phase::Joining;
+  bool start_reported_ = false;
   bool finished_ = false;
   std::vector<Client> clients_;
   std::vector<int> slot_owner_;              // client index or -1

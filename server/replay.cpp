@@ -1,6 +1,7 @@
 #include "replay.h"
 
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -12,9 +13,12 @@ namespace {
 constexpr const char* kMagic = "OLYMPICS-REPLAY 1";
 }
 
-void write_replay(const std::string& path, const Replay& r) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw std::runtime_error("cannot write replay " + path);
+std::string write_replay(const std::string& path, const Replay& r) {
+  // Never over another replay: a taken name gets a numbered suffix.
+  std::string where = path;
+  for (int n = 1; std::filesystem::exists(where); ++n) where = path + "." + std::to_string(n);
+  std::ofstream out(where, std::ios::binary);
+  if (!out) throw std::runtime_error("cannot write replay " + where);
   nlohmann::json header = r.header;
   header["slot_count"] = r.slot_count;
   header["action_size"] = r.action_size;
@@ -22,7 +26,8 @@ void write_replay(const std::string& path, const Replay& r) {
   out << kMagic << "\n" << header.dump() << "\n";
   out.write(reinterpret_cast<const char*>(r.actions.data()),
             static_cast<std::streamsize>(r.actions.size() * sizeof(float)));
-  if (!out) throw std::runtime_error("writing replay " + path + " failed (disk full?)");
+  if (!out) throw std::runtime_error("writing replay " + where + " failed (disk full?)");
+  return where;
 }
 
 Replay read_replay(const std::string& path) {

@@ -24,7 +24,9 @@ struct Replay {
   }
 };
 
-void write_replay(const std::string& path, const Replay& replay);
+// Writes the replay at `path`, or, if that file exists, beside it with a numbered suffix (a
+// replay is never overwritten); returns where it went.
+std::string write_replay(const std::string& path, const Replay& replay);
 // Throws std::runtime_error naming the file and what is wrong with it.
 Replay read_replay(const std::string& path);
 

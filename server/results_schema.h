@@ -33,6 +33,17 @@ CREATE TABLE IF NOT EXISTS participants (
   PRIMARY KEY (match_id, slot)
 );
 CREATE INDEX IF NOT EXISTS matches_finished ON matches(finished_at_unix);
+CREATE TABLE IF NOT EXISTS matches_in_progress (
+  match_id        TEXT PRIMARY KEY,
+  server_id       TEXT NOT NULL,
+  sport           TEXT NOT NULL,
+  mode            TEXT NOT NULL,
+  seed            BIGINT NOT NULL,
+  realtime        INTEGER NOT NULL,
+  options         TEXT NOT NULL,
+  participants    TEXT NOT NULL,
+  created_at_unix BIGINT NOT NULL
+);
 )sql";
 
 // Columns added since the first schema, for stores made before them: (column, definition).

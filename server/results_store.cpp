@@ -1,5 +1,6 @@
 #include "results_store.h"
 
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
@@ -52,7 +53,66 @@ void ResultsStore::record(const StoredMatch& m) {
       db_->query("INSERT INTO participants VALUES ($1,$2,$3,$4,$5,$6)",
                  {m.match_id, std::to_string(p.slot), std::to_string(p.team), p.agent, p.policy,
                   p.policy_version});
+    db_->query("DELETE FROM matches_in_progress WHERE match_id = $1", {m.match_id});
   });
+}
+
+namespace {
+
+std::string players_json(const std::vector<StoredParticipant>& players) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& p : players)
+    out.push_back({{"slot", p.slot},
+                   {"team", p.team},
+                   {"agent", p.agent},
+                   {"policy", p.policy},
+                   {"policy_version", p.policy_version}});
+  return out.dump();
+}
+
+}  // namespace
+
+void ResultsStore::note_in_progress(const StoredMatch& m) {
+  std::lock_guard lock(mutex_);
+  db_->query(
+      "INSERT INTO matches_in_progress (match_id, server_id, sport, mode, seed, realtime, "
+      "options, participants, created_at_unix) VALUES ($1,$2,$3,$4,$5,$6,$7,$8,$9)",
+      {m.match_id, m.server_id, m.sport, m.mode, std::to_string(m.seed), m.realtime ? "1" : "0",
+       m.options, players_json(m.participants), std::to_string(m.finished_at_unix)});
+}
+
+void ResultsStore::note_players(const std::string& match_id,
+                                const std::vector<StoredParticipant>& players) {
+  std::lock_guard lock(mutex_);
+  db_->query("UPDATE matches_in_progress SET participants = $2 WHERE match_id = $1",
+             {match_id, players_json(players)});
+}
+
+int ResultsStore::abort_unfinished(const std::string& server_id, std::int64_t now_unix) {
+  std::vector<StoredMatch> left;
+  {
+    std::lock_guard lock(mutex_);
+    for (const auto& r :
+         db_->query("SELECT match_id, sport, mode, seed, realtime, options, participants FROM "
+                    "matches_in_progress WHERE server_id = $1 ORDER BY created_at_unix, match_id",
+                    {server_id})) {
+      StoredMatch m;
+      m.match_id = r[0], m.server_id = server_id, m.server_version = "?";
+      m.sport = r[1], m.mode = r[2], m.seed = std::stoll(r[3]), m.realtime = r[4] == "1";
+      m.options = r[5];
+      m.reason = "aborted: server " + server_id + " stopped before the match ended";
+      m.winner_team = -1;
+      m.info = "{}";
+      m.finished_at_unix = now_unix;
+      for (const auto& p : nlohmann::json::parse(r[6], nullptr, false))
+        if (p.is_object())
+          m.participants.push_back({p.value("slot", 0), p.value("team", 0), p.value("agent", ""),
+                                    p.value("policy", ""), p.value("policy_version", "")});
+      left.push_back(std::move(m));
+    }
+  }
+  for (const auto& m : left) record(m);
+  return static_cast<int>(left.size());
 }
 
 std::vector<StoredMatch> ResultsStore::select(const std::string& column, const std::string& value,

@@ -49,8 +49,16 @@ class ResultsStore {
   ResultsStore(const ResultsStore&) = delete;
   ResultsStore& operator=(const ResultsStore&) = delete;
 
-  // Writes one match and its participants atomically; a match id already stored is an error.
+  // Writes one match and its participants atomically, and drops its in-progress note; a match id
+  // already stored is an error.
   void record(const StoredMatch& match);
+  // A match the server took on (`match` without its end: id, server, sport, mode, seed, realtime,
+  // options), so that a crash leaves a trace; then its players, once it starts.
+  void note_in_progress(const StoredMatch& match);
+  void note_players(const std::string& match_id, const std::vector<StoredParticipant>& players);
+  // Matches `server_id` left unfinished (a crash): recorded as "aborted", with no winner; how
+  // many there were.
+  int abort_unfinished(const std::string& server_id, std::int64_t now_unix);
   // Most recent first; `sport` empty = all sports.
   std::vector<StoredMatch> recent(int limit, const std::string& sport = "");
   std::optional<StoredMatch> find(const std::string& match_id);

@@ -110,6 +110,7 @@ void load_server_config_file(const std::string& path, ServerConfig& c) {
     in.read("results", c.results);
     in.read("replay_dir", c.host.replay_dir);
     in.read("lcm_logs", c.host.lcm_logs);
+    in.read("secret_file", c.secret_file);
   }
   if (auto* t = root["sync"].as_table()) read_runtime(path, *t, "sync", c.host.sync);
   if (auto* t = root["realtime"].as_table()) read_runtime(path, *t, "realtime", c.host.realtime);
@@ -118,10 +119,103 @@ void load_server_config_file(const std::string& path, ServerConfig& c) {
     in.read("drop_rate", c.transport.drop_rate);
     in.read("drop_seed", c.transport.drop_seed);
   }
-  if (c.host.capacity < 1)
-    throw std::runtime_error(path + ": [server] capacity must be at least 1");
+  try {
+    validate_server_config(c);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
+}
+
+void apply_flags(const ServerFlags& f, ServerConfig& c) {
+  if (f.id) c.host.server_id = *f.id;
+  if (f.lcm_url) c.transport.url = *f.lcm_url;
+  if (f.secret_file) c.secret_file = *f.secret_file;
+  if (f.results) c.results = *f.results;
+  if (f.replay_dir) c.host.replay_dir = *f.replay_dir;
+  if (f.lcm_logs) c.host.lcm_logs = true;
+  if (f.capacity) c.host.capacity = *f.capacity;
+  if (f.workers) c.host.workers = *f.workers;
+  if (f.drop_rate) c.transport.drop_rate = *f.drop_rate;
+  if (f.drop_seed) c.transport.drop_seed = *f.drop_seed;
+  // Timing flags set both modes; missed ticks is the lockstep mode's.
+  for (auto* r : {&c.host.sync, &c.host.realtime}) {
+    if (f.action_deadline_ms) r->action_deadline_s = *f.action_deadline_ms / 1000.0;
+    if (f.resend_ms) r->resend_interval_s = *f.resend_ms / 1000.0;
+    if (f.silent_timeout_s) r->silent_timeout_s = *f.silent_timeout_s;
+    if (f.join_timeout_s) r->join_timeout_s = *f.join_timeout_s;
+  }
+  if (f.max_missed_ticks) c.host.sync.max_missed_ticks = *f.max_missed_ticks;
+}
+
+namespace {
+
+void in_range(const std::string& key, double value, double lo, double hi) {
+  if (!(value >= lo && value <= hi)) {
+    std::ostringstream out;
+    out << "setting " << key << " must be in " << lo << ".." << hi << ", got " << value;
+    throw std::invalid_argument(out.str());
+  }
+}
+
+void validate_runtime(const std::string& mode, const RuntimeSettings& r) {
+  in_range(mode + ".action_deadline_ms (--action-deadline-ms)", r.action_deadline_s * 1000, 1,
+           600000);
+  in_range(mode + ".max_missed_ticks (--max-missed-ticks)", r.max_missed_ticks, 1, 1000000);
+  in_range(mode + ".resend_ms (--resend-ms)", r.resend_interval_s * 1000, 1, 10000);
+  in_range(mode + ".silent_timeout_s (--silent-timeout-s)", r.silent_timeout_s, 0.1, 86400);
+  in_range(mode + ".join_timeout_s (--join-timeout-s)", r.join_timeout_s, 0.1, 86400);
+}
+
+}  // namespace
+
+void validate_server_config(const ServerConfig& c) {
+  const std::string& id = c.host.server_id;
+  if (id.empty() || id.size() > 64 || id.find_first_of(" \t\n/\\") != std::string::npos)
+    throw std::invalid_argument(
+        "setting server.id (--id) must be 1..64 characters without "
+        "spaces or slashes, got \"" +
+        id + "\"");
+  in_range("server.capacity (--capacity)", c.host.capacity, 1, 100000);
+  in_range("server.workers (--workers)", c.host.workers, 0, 1024);
+  validate_runtime("sync", c.host.sync);
+  validate_runtime("realtime", c.host.realtime);
   if (c.transport.drop_rate < 0 || c.transport.drop_rate >= 1)
-    throw std::runtime_error(path + ": [test] drop_rate must be in [0, 1)");
+    throw std::invalid_argument("setting test.drop_rate (--drop-rate) must be in [0, 1), got " +
+                                std::to_string(c.transport.drop_rate));
+  if (c.results.empty())
+    throw std::invalid_argument(
+        "setting server.results (--results) must name a SQLite file or a "
+        "postgresql:// URL");
+}
+
+void check_server_resources(const ServerConfig& c) {
+  protocol::load_secret(c.secret_file);  // throws saying what is wrong with the file
+  const bool postgres = c.results.rfind("postgres", 0) == 0;
+  if (!postgres) {
+    const auto slash = c.results.rfind('/');
+    const std::string folder = slash == std::string::npos ? "." : c.results.substr(0, slash);
+    if (access(folder.empty() ? "/" : folder.c_str(), W_OK) != 0)
+      throw std::invalid_argument("the results folder " + folder +
+                                  " does not exist or is not writable (server.results)");
+  }
+}
+
+std::string describe_server_config(const ServerConfig& c) {
+  char text[1024];
+  const auto& s = c.host.sync;
+  std::snprintf(
+      text, sizeof text,
+      "config ok: id %s, lcm %s, capacity %d, workers %d, results %s, replays %s, secret %s\n"
+      "sync: deadline %.0f ms, %d missed ticks, resend %.0f ms, silent %.1f s, join %.0f s\n"
+      "realtime: %d missed ticks, silent %.1f s\n",
+      c.host.server_id.c_str(), c.transport.url.empty() ? "(default)" : c.transport.url.c_str(),
+      c.host.capacity, c.host.workers, c.results.c_str(),
+      c.host.replay_dir.empty() ? "(none)" : c.host.replay_dir.c_str(),
+      c.secret_file.empty() ? "(none: $OLYMPICS_SECRET_FILE or unsigned)" : c.secret_file.c_str(),
+      s.action_deadline_s * 1000, s.max_missed_ticks, s.resend_interval_s * 1000,
+      s.silent_timeout_s, s.join_timeout_s, c.host.realtime.max_missed_ticks,
+      c.host.realtime.silent_timeout_s);
+  return text;
 }
 
 }  // namespace olympics::server

@@ -2,6 +2,8 @@
 // is known; a typo or a wrong type is an error that names the file, line and key.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string>
 
 #include "match_host.h"
@@ -13,10 +15,27 @@ struct ServerConfig {
   HostSettings host;
   protocol::TransportOptions transport;
   std::string results = "olympics-results.db";  // SQLite path or postgresql:// URL
+  std::string secret_file;                      // "" = $OLYMPICS_SECRET_FILE, or none
+};
+
+// What the command line gave; each set one wins over the file.
+struct ServerFlags {
+  std::optional<std::string> id, lcm_url, secret_file, results, replay_dir;
+  std::optional<int> capacity, workers, max_missed_ticks;
+  std::optional<double> action_deadline_ms, resend_ms, silent_timeout_s, join_timeout_s;
+  std::optional<double> drop_rate;
+  std::optional<std::uint64_t> drop_seed;
+  bool lcm_logs = false;
 };
 
 ServerConfig default_server_config();
 // Reads `path` over `config`. Throws std::runtime_error "FILE:LINE:COL: problem".
 void load_server_config_file(const std::string& path, ServerConfig& config);
+void apply_flags(const ServerFlags& flags, ServerConfig& config);
+// Throws std::invalid_argument naming the first setting out of its range and the range.
+void validate_server_config(const ServerConfig& config);
+// For --dry-run: the secret loads and the results folder is writable (throws saying which not).
+void check_server_resources(const ServerConfig& config);
+std::string describe_server_config(const ServerConfig& config);
 
 }  // namespace olympics::server

@@ -138,6 +138,8 @@ int main(int argc, char** argv) {
   app.add_option("--policy-version", options.policy_version,
                  "policy version recorded with the result");
   app.add_option("--lcm-url", options.lcm_url, "LCM provider URL");
+  app.add_option("--secret", options.secret_file,
+                 "the deployment's secret file (default $OLYMPICS_SECRET_FILE; docs/security.md)");
   app.add_option("--timeout", timeout_s, "give up when the server is silent this long (s)");
   app.add_option("--drop-rate", options.drop_rate, "TEST ONLY: drop this share of sent datagrams");
   app.add_option("--drop-seed", options.drop_seed, "TEST ONLY: seed of the drops");

@@ -12,6 +12,7 @@
 #include "olympics/league_assignment_t.hpp"
 #include "olympics/match_request_t.hpp"
 #include "olympics/observation_batch_t.hpp"
+#include "olympics/server_announce_t.hpp"
 #include "version.h"
 
 namespace olympics::client {
@@ -50,7 +51,8 @@ bool Observation::all_done() const {
 MatchClient::MatchClient(const ClientOptions& options)
     : options_(options),
       client_id_(options.agent_name + "-" + random_id()),
-      transport_({options.lcm_url, options.drop_rate, options.drop_seed}) {
+      transport_({options.lcm_url, options.drop_rate, options.drop_seed,
+                  protocol::load_secret(options.secret_file)}) {
   transport_.subscribe_to<olympics::match_created_t>(
       protocol::kCreated, [this](const std::string&, const olympics::match_created_t& m) {
         if (!pending_request_id_.empty() && m.request_id == pending_request_id_) created_ = m;
@@ -83,6 +85,37 @@ MatchClient::MatchClient(const ClientOptions& options)
       protocol::kResult, [this](const std::string&, const olympics::match_result_t& m) {
         if (joined_ && m.match_id == match_.match_id) result_ = m;
       });
+  transport_.subscribe_to<olympics::server_announce_t>(
+      protocol::kAnnounce, [this](const std::string&, const olympics::server_announce_t& a) {
+        if (servers_.size() < kMaxQueued || servers_.count(a.server_id))
+          servers_[a.server_id] = {Clock::now(), a.boot_us};
+      });
+}
+
+void MatchClient::fail_if_match_lost() {
+  // A joined client passed the version and signature checks: in play, only these end it.
+  for (const auto& e : errors_)
+    if ((e.code == "UNKNOWN_MATCH" || e.code == "STORE_FAILED") && e.match_id == match_.match_id)
+      throw MatchError(e.code, e.message);
+  if (!joined_) return;
+  const auto seen = servers_.find(match_.server_id);
+  const auto silence = seconds(options_.server_silence_s);
+  if (seen == servers_.end()) {
+    if (Clock::now() - joined_at_ > silence)
+      throw MatchError("SERVER_GONE", "server " + match_.server_id + " of match " +
+                                          match_.match_id + " has not announced itself since " +
+                                          "the join: it is gone, or on another network");
+    return;
+  }
+  if (match_server_boot_ == 0) match_server_boot_ = seen->second.boot_us;
+  if (seen->second.boot_us != match_server_boot_)
+    throw MatchError("SERVER_RESTARTED", "server " + match_.server_id + " restarted: match " +
+                                             match_.match_id + " is lost");
+  if (Clock::now() - seen->second.when > silence)
+    throw MatchError("SERVER_GONE", "server " + match_.server_id +
+                                        " stopped announcing itself: "
+                                        "match " +
+                                        match_.match_id + " is lost");
 }
 
 void MatchClient::pump(Clock::time_point until) {
@@ -168,6 +201,10 @@ olympics::match_created_t MatchClient::join(const std::string& match_id,
     if (now >= deadline)
       throw MatchError("TIMEOUT", "no answer to the join of match " + match_id + " within " +
                                       std::to_string(timeout_s) + " s");
+    for (const auto& e : errors_)
+      if ((e.code == "UNKNOWN_MATCH" || e.code == "UNAUTHENTICATED" || e.code == "UPGRADE") &&
+          (e.match_id.empty() || e.match_id == match_id))
+        throw MatchError(e.code, e.message);
     if (now >= next_send) {
       transport_.publish(protocol::kJoin, j);
       next_send = now + seconds(0.25);
@@ -210,6 +247,9 @@ olympics::match_created_t MatchClient::join(const std::string& match_id,
         latest_ = std::move(o);
       });
   last_heartbeat_ = Clock::now();
+  joined_at_ = Clock::now();
+  match_server_boot_ = 0;
+  errors_.clear();
   return match_;
 }
 
@@ -243,6 +283,7 @@ std::optional<Observation> MatchClient::next(double timeout_s) {
     if (Clock::now() >= deadline)
       throw MatchError("TIMEOUT", "no observation from match " + match_.match_id + " for " +
                                       std::to_string(timeout_s) + " s: the server may be gone");
+    fail_if_match_lost();
     heartbeat_if_due();
     resend_if_due();
     pump(deadline);
@@ -281,10 +322,13 @@ const olympics::match_result_t& MatchClient::wait_result(double timeout_s) {
     if (Clock::now() >= deadline)
       throw MatchError("TIMEOUT", "no result for match " + match_.match_id + " within " +
                                       std::to_string(timeout_s) + " s");
+    fail_if_match_lost();
     heartbeat_if_due();
     resend_if_due();  // a server that has finished answers a resent action with the result
     pump(deadline);
   }
+  pump(Clock::now());  // an error about storing it comes just before the result
+  fail_if_match_lost();
   return *result_;
 }
 

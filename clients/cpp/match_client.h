@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -35,8 +36,14 @@ struct ClientOptions {
   std::string policy_version;
   double resend_interval_s = 0.03;
   double heartbeat_interval_s = 0.5;
+  // The match's server not announcing for this long (it announces every second), or announcing
+  // another boot, ends the wait for the match: SERVER_GONE / SERVER_RESTARTED.
+  double server_silence_s = 5.0;
   double drop_rate = 0;  // TEST ONLY: drop this share of sent datagrams
   std::uint64_t drop_seed = 1;
+  // The deployment's secret file ("" = $OLYMPICS_SECRET_FILE, or none): messages are signed and
+  // checked (docs/security.md).
+  std::string secret_file;
 };
 
 // A league's word to a live learner: play these slots of this match.
@@ -97,6 +104,8 @@ class MatchClient {
  private:
   using Clock = std::chrono::steady_clock;
   void pump(Clock::time_point until);
+  // Throws when the match cannot go on: a fatal error about it, or its server gone or restarted.
+  void fail_if_match_lost();
   void heartbeat_if_due();
   void resend_if_due();
 
@@ -121,6 +130,13 @@ class MatchClient {
   std::vector<std::string> assigned_matches_;
   std::vector<olympics::error_t> errors_;
   Clock::time_point last_heartbeat_, last_send_;
+  struct ServerSeen {
+    Clock::time_point when;
+    std::int64_t boot_us = 0;
+  };
+  std::map<std::string, ServerSeen> servers_;  // by id, from their announcements
+  std::int64_t match_server_boot_ = 0;         // the match's server's boot when we joined
+  Clock::time_point joined_at_;
   static constexpr double kMaxResendGapS = 0.25;
   static constexpr size_t kMaxQueued = 1000;  // errors, assignments kept until taken
   double resend_gap_s_ = 0.03;

@@ -17,7 +17,7 @@ namespace {
 // Listens to OLY_ERROR and sends hand-made (bad) messages.
 class Prankster {
  public:
-  explicit Prankster(const std::string& url) : transport_({url}) {
+  explicit Prankster(const std::string& url) : transport_(protocol::TransportOptions(url)) {
     transport_.subscribe(protocol::kError,
                          [this](const std::string&, const std::uint8_t* d, int n) {
                            if (auto e = protocol::decode<olympics::error_t>(d, n))

@@ -59,7 +59,7 @@ TEST(Replay, LcmLogOfTheMatchPlaysBackWithLcmLogplayer) {
       server.dir() + "/replays/" + r.at("match_id").get<std::string>() + ".lcmlog";
   // Play it onto a fresh port and count the observation batches that arrive.
   const std::string url = unique_lcm_url();
-  protocol::Transport listener({url});
+  protocol::Transport listener{protocol::TransportOptions(url)};
   int observations = 0;
   listener.subscribe(std::string(protocol::kObsPrefix) + ".*",
                      [&](const std::string&, const std::uint8_t*, int) { ++observations; });

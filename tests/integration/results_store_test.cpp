@@ -120,9 +120,7 @@ TEST(ResultsStoreErrors, UnreachablePlacesSayWhatToCheck) {
     ADD_FAILURE();
   } catch (const std::runtime_error& e) {
     std::string what = e.what();
-    EXPECT_NE(what.find("cannot connect to postgresql://nobody:***@"),
-              std::string::npos)
-        << what;
+    EXPECT_NE(what.find("cannot connect to postgresql://nobody:***@"), std::string::npos) << what;
     EXPECT_EQ(what.find("secret"), std::string::npos) << "password leaked: " << what;
   }
 }

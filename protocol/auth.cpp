@@ -1,0 +1,120 @@
+#include "auth.h"
+
+#include <fcntl.h>
+#include <openssl/crypto.h>
+#include <openssl/evp.h>
+#include <openssl/hmac.h>
+#include <openssl/rand.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "channels.h"
+
+namespace olympics::protocol {
+namespace {
+
+std::array<unsigned char, kSignatureBytes> hmac(const unsigned char* key, int key_size,
+                                                const unsigned char* data, size_t size) {
+  std::array<unsigned char, kSignatureBytes> out{};
+  unsigned int length = 0;
+  if (!HMAC(EVP_sha256(), key, key_size, data, size, out.data(), &length) ||
+      length != kSignatureBytes)
+    throw std::runtime_error("HMAC-SHA256 failed (OpenSSL)");
+  return out;
+}
+
+bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+
+}  // namespace
+
+Role sender_of(const std::string& channel) {
+  for (const char* server : {kAnnounce, kCreated, kJoinReply, kStart, kResult, kError})
+    if (channel == server) return Role::Server;
+  return starts_with(channel, kObsPrefix) ? Role::Server : Role::Client;
+}
+
+Authenticator::Authenticator(const std::string& secret) {
+  for (Role role : {Role::Server, Role::Client}) {
+    const std::string purpose =
+        std::string("olympics-v1 ") + (role == Role::Server ? "server" : "client");
+    keys_[static_cast<int>(role)] =
+        hmac(reinterpret_cast<const unsigned char*>(secret.data()), static_cast<int>(secret.size()),
+             reinterpret_cast<const unsigned char*>(purpose.data()), purpose.size());
+  }
+}
+
+Authenticator Authenticator::from_file(const std::string& path) {
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0)
+    throw std::runtime_error("secret file " + path + " cannot be read: " + std::strerror(errno) +
+                             " (make one with `olympics-server secret " + path + "`)");
+  if (st.st_mode & (S_IRWXG | S_IRWXO))
+    throw std::runtime_error("secret file " + path + " is open to other users; `chmod 600 " + path +
+                             "` first");
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string secret = text.str();
+  while (!secret.empty() && std::isspace(static_cast<unsigned char>(secret.back())))
+    secret.pop_back();
+  if (secret.size() < 16)
+    throw std::runtime_error("secret file " + path + " holds " + std::to_string(secret.size()) +
+                             " bytes; a secret needs at least 16 (make one with `olympics-server "
+                             "secret FILE`)");
+  return Authenticator(secret);
+}
+
+std::array<unsigned char, kSignatureBytes> Authenticator::mac(Role role, const std::string& channel,
+                                                              const std::uint8_t* bytes,
+                                                              int size) const {
+  // channel, a NUL, then the message with its signature field zeroed
+  std::vector<unsigned char> data(channel.size() + 1 + static_cast<size_t>(size), 0);
+  std::memcpy(data.data(), channel.data(), channel.size());
+  std::memcpy(data.data() + channel.size() + 1, bytes, static_cast<size_t>(size - kSignatureBytes));
+  const auto& key = keys_[static_cast<int>(role)];
+  return hmac(key.data(), kSignatureBytes, data.data(), data.size());
+}
+
+void Authenticator::sign(const std::string& channel, std::uint8_t* bytes, int size) const {
+  if (size < kSignatureBytes + 8) return;  // not one of our messages
+  const auto m = mac(sender_of(channel), channel, bytes, size);
+  std::memcpy(bytes + size - kSignatureBytes, m.data(), kSignatureBytes);
+}
+
+bool Authenticator::verify(const std::string& channel, const std::uint8_t* bytes, int size) const {
+  if (!bytes || size < kSignatureBytes + 8) return false;
+  const auto m = mac(sender_of(channel), channel, bytes, size);
+  return CRYPTO_memcmp(m.data(), bytes + size - kSignatureBytes, kSignatureBytes) == 0;
+}
+
+std::shared_ptr<const Authenticator> load_secret(const std::string& path) {
+  std::string file = path;
+  if (file.empty())
+    if (const char* env = std::getenv("OLYMPICS_SECRET_FILE")) file = env;
+  if (file.empty()) return nullptr;
+  return std::make_shared<const Authenticator>(Authenticator::from_file(file));
+}
+
+void write_new_secret(const std::string& path) {
+  unsigned char raw[32];
+  if (RAND_bytes(raw, sizeof raw) != 1) throw std::runtime_error("no random bytes (OpenSSL)");
+  char hex[2 * sizeof raw + 2];
+  for (size_t i = 0; i < sizeof raw; ++i) std::snprintf(hex + 2 * i, 3, "%02x", raw[i]);
+  hex[2 * sizeof raw] = '\n';
+  const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
+  if (fd < 0)
+    throw std::runtime_error("cannot create " + path + ": " + std::strerror(errno) +
+                             " (an existing secret is never overwritten)");
+  const bool ok = write(fd, hex, 2 * sizeof raw + 1) == static_cast<ssize_t>(2 * sizeof raw + 1);
+  close(fd);
+  if (!ok) throw std::runtime_error("could not write " + path);
+}
+
+}  // namespace olympics::protocol

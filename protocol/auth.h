@@ -1,0 +1,48 @@
+// Message authentication (docs/security.md). A deployment's secret lives in a file that never
+// goes on the wire; from it each side derives one HMAC-SHA256 key per sender role. Every message
+// ends with a 32-byte `signature` field: the HMAC, under the sender's role key, of the channel's
+// name and the encoded message with that field zeroed. Signing takes the channel, so a message
+// cannot be moved to another channel; its content names the match, client, slots and tick, so a
+// copied client id or a datagram replayed into another match or tick is of no use.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace olympics::protocol {
+
+// Who sends on a channel: servers (announcements, descriptions, observations, results, errors),
+// or clients (requests, joins, actions, heartbeats; agents, trainers and leagues alike).
+enum class Role { Server, Client };
+Role sender_of(const std::string& channel);
+inline constexpr int kSignatureBytes = 32;
+
+class Authenticator {
+ public:
+  explicit Authenticator(const std::string& secret);
+  // Reads a secret file; throws std::runtime_error saying what to fix when it is missing, shorter
+  // than 16 bytes, or readable by other users.
+  static Authenticator from_file(const std::string& path);
+
+  // Signs an encoded message of ours in place: its last 32 bytes are its signature field.
+  void sign(const std::string& channel, std::uint8_t* bytes, int size) const;
+  // Whether an encoded message carries a valid signature for its channel.
+  bool verify(const std::string& channel, const std::uint8_t* bytes, int size) const;
+
+ private:
+  std::array<unsigned char, kSignatureBytes> mac(Role role, const std::string& channel,
+                                                 const std::uint8_t* bytes, int size) const;
+  std::array<std::array<unsigned char, kSignatureBytes>, 2> keys_;  // by Role
+};
+
+// The authenticator of a secret file: `path`, or else $OLYMPICS_SECRET_FILE, or else none
+// (nullptr: nothing signed or checked).
+std::shared_ptr<const Authenticator> load_secret(const std::string& path);
+
+// Writes a new random 32-byte secret (hex) to `path`, readable by its owner only; refuses to
+// overwrite a file.
+void write_new_secret(const std::string& path);
+
+}  // namespace olympics::protocol
