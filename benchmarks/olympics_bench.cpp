@@ -37,6 +37,8 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   bool no_pin = false;
   serv->add_flag("--no-pin", no_pin, "let the OS place the server's workers");
+  serv->add_flag("--signed", server.signed_messages,
+                 "with a deployment secret: every message signed and checked");
   olympics::bench::RacketBenchOptions racket;
   auto* rack = app.add_subcommand(
       "racket", "tennis / table tennis: scripted touch rate, match ticks/s vs bare physics");

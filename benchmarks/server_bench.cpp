@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "auth.h"
 #include "match_client.h"
 #include "match_host.h"
 #include "registry.h"
@@ -75,7 +76,11 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
   const int cores = static_cast<int>(std::thread::hardware_concurrency());
   const bool pin = o.pin && cores > o.workers;
   if (pin) pin_this_thread(o.workers, cores - 1);
-  protocol::Transport server_transport{protocol::TransportOptions(url)};
+  // With a secret, server and clients sign and check every message, as a secured deployment.
+  const std::string secret = o.signed_messages ? std::string(db) + ".secret" : "";
+  if (o.signed_messages) protocol::write_new_secret(secret);
+  protocol::Transport server_transport{protocol::TransportOptions(
+      url, 0.0, 1, o.signed_messages ? protocol::load_secret(secret) : nullptr)};
   server::HostSettings settings;
   settings.server_id = "bench";
   settings.workers = o.workers;
@@ -96,6 +101,7 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
       client::ClientOptions co;
       co.lcm_url = url;
       co.agent_name = "bench" + std::to_string(m);
+      co.secret_file = secret;
       client::MatchClient c(co);
       for (int game = 0; !stop_clients; ++game) {
         client::MatchRequest req;
@@ -150,10 +156,12 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
   stop_server = true;
   server_thread.join();
   std::remove(db);
+  if (o.signed_messages) std::remove(secret.c_str());
 
   std::vector<double> all;
   for (auto& r : round_trips) all.insert(all.end(), r.begin(), r.end());
   return {{"scene", "sandbox 1v1 (2 SMPL humanoids), zero actions, sync mode"},
+          {"signed_messages", o.signed_messages},
           {"matches", o.matches},
           {"server_workers", o.workers},
           {"workers_pinned", pin},
@@ -168,10 +176,11 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
 }
 
 void print_server_report(const nlohmann::json& r) {
-  std::printf("server: %s, %d matches at once, %d server worker(s)%s\n",
+  std::printf("server: %s, %d matches at once, %d server worker(s)%s%s\n",
               r["scene"].get<std::string>().c_str(), r["matches"].get<int>(),
               r["server_workers"].get<int>(),
-              r["workers_pinned"].get<bool>() ? ", pinned to cores of their own" : "");
+              r["workers_pinned"].get<bool>() ? ", pinned to cores of their own" : "",
+              r["signed_messages"].get<bool>() ? ", every message signed and checked" : "");
   std::printf("  served           %8.0f ticks/s per worker\n",
               r["served_ticks_per_s_per_worker"].get<double>());
   std::printf("  bare physics     %8.0f ticks/s on one core (same scene, no network)\n",

@@ -6,10 +6,11 @@
 namespace olympics::bench {
 
 struct ServerBenchOptions {
-  double seconds = 3.0;  // wall time per measurement
-  int matches = 8;       // concurrent matches, one client each (both slots)
-  int workers = 1;       // server threads: 1 = "per core"
-  bool pin = true;       // workers alone on their cores, everything else on the others
+  double seconds = 3.0;          // wall time per measurement
+  int matches = 8;               // concurrent matches, one client each (both slots)
+  int workers = 1;               // server threads: 1 = "per core"
+  bool pin = true;               // workers alone on their cores, everything else on the others
+  bool signed_messages = false;  // a deployment secret: every message signed and checked
 };
 
 nlohmann::json run_server_bench(const ServerBenchOptions& options);

@@ -4,6 +4,7 @@
 #include <openssl/crypto.h>
 #include <openssl/evp.h>
 #include <openssl/hmac.h>
+#include <openssl/params.h>
 #include <openssl/rand.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -41,13 +42,31 @@ Role sender_of(const std::string& channel) {
 }
 
 Authenticator::Authenticator(const std::string& secret) {
+  EVP_MAC* mac = EVP_MAC_fetch(nullptr, "HMAC", nullptr);
+  if (!mac) throw std::runtime_error("OpenSSL has no HMAC");
+  char digest[] = "SHA256";
+  const OSSL_PARAM params[] = {OSSL_PARAM_construct_utf8_string("digest", digest, 0),
+                               OSSL_PARAM_construct_end()};
   for (Role role : {Role::Server, Role::Client}) {
     const std::string purpose =
         std::string("olympics-v1 ") + (role == Role::Server ? "server" : "client");
-    keys_[static_cast<int>(role)] =
+    const auto key =
         hmac(reinterpret_cast<const unsigned char*>(secret.data()), static_cast<int>(secret.size()),
              reinterpret_cast<const unsigned char*>(purpose.data()), purpose.size());
+    EVP_MAC_CTX* ctx = EVP_MAC_CTX_new(mac);
+    if (!ctx || !EVP_MAC_init(ctx, key.data(), key.size(), params))
+      throw std::runtime_error("HMAC-SHA256 keying failed (OpenSSL)");
+    keyed_[static_cast<int>(role)] = ctx;
   }
+  EVP_MAC_free(mac);
+}
+
+Authenticator::~Authenticator() {
+  for (void* ctx : keyed_) EVP_MAC_CTX_free(static_cast<EVP_MAC_CTX*>(ctx));
+}
+
+Authenticator::Authenticator(Authenticator&& other) noexcept : keyed_(other.keyed_) {
+  other.keyed_ = {nullptr, nullptr};
 }
 
 Authenticator Authenticator::from_file(const std::string& path) {
@@ -75,11 +94,20 @@ std::array<unsigned char, kSignatureBytes> Authenticator::mac(Role role, const s
                                                               const std::uint8_t* bytes,
                                                               int size) const {
   // channel, a NUL, then the message with its signature field zeroed
-  std::vector<unsigned char> data(channel.size() + 1 + static_cast<size_t>(size), 0);
-  std::memcpy(data.data(), channel.data(), channel.size());
-  std::memcpy(data.data() + channel.size() + 1, bytes, static_cast<size_t>(size - kSignatureBytes));
-  const auto& key = keys_[static_cast<int>(role)];
-  return hmac(key.data(), kSignatureBytes, data.data(), data.size());
+  static const unsigned char zeros[kSignatureBytes + 1] = {};
+  EVP_MAC_CTX* ctx = EVP_MAC_CTX_dup(static_cast<EVP_MAC_CTX*>(keyed_[static_cast<int>(role)]));
+  std::array<unsigned char, kSignatureBytes> out{};
+  size_t length = 0;
+  const bool ok =
+      ctx &&
+      EVP_MAC_update(ctx, reinterpret_cast<const unsigned char*>(channel.data()), channel.size()) &&
+      EVP_MAC_update(ctx, zeros, 1) &&
+      EVP_MAC_update(ctx, bytes, static_cast<size_t>(size - kSignatureBytes)) &&
+      EVP_MAC_update(ctx, zeros, kSignatureBytes) &&
+      EVP_MAC_final(ctx, out.data(), &length, out.size()) && length == kSignatureBytes;
+  EVP_MAC_CTX_free(ctx);
+  if (!ok) throw std::runtime_error("HMAC-SHA256 failed (OpenSSL)");
+  return out;
 }
 
 void Authenticator::sign(const std::string& channel, std::uint8_t* bytes, int size) const {

@@ -22,6 +22,10 @@ inline constexpr int kSignatureBytes = 32;
 class Authenticator {
  public:
   explicit Authenticator(const std::string& secret);
+  ~Authenticator();
+  Authenticator(const Authenticator&) = delete;
+  Authenticator& operator=(const Authenticator&) = delete;
+  Authenticator(Authenticator&& other) noexcept;
   // Reads a secret file; throws std::runtime_error saying what to fix when it is missing, shorter
   // than 16 bytes, or readable by other users.
   static Authenticator from_file(const std::string& path);
@@ -34,7 +38,8 @@ class Authenticator {
  private:
   std::array<unsigned char, kSignatureBytes> mac(Role role, const std::string& channel,
                                                  const std::uint8_t* bytes, int size) const;
-  std::array<std::array<unsigned char, kSignatureBytes>, 2> keys_;  // by Role
+  // Per role, an HMAC context keyed once; each message is signed on a copy of it.
+  std::array<void*, 2> keyed_{nullptr, nullptr};  // EVP_MAC_CTX*, by Role
 };
 
 // The authenticator of a secret file: `path`, or else $OLYMPICS_SECRET_FILE, or else none

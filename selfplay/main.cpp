@@ -58,6 +58,42 @@ std::vector<Entrant> parse_entrants(const std::vector<std::string>& specs, size_
   return out;
 }
 
+// The settings given on the command line that differ from a stored run's ("sport fencing, not
+// tennis; ..."); only flags actually given count.
+std::string differences(const TournamentSpec& stored, const TournamentSpec& asked,
+                        const CLI::App& cmd, const std::vector<std::string>& entrants) {
+  std::string out;
+  auto note = [&](const char* flag, const std::string& now, const std::string& was) {
+    if (cmd.count(flag) && now != was)
+      out += (out.empty() ? "" : "; ") + std::string(flag) + " " + now + ", stored " + was;
+  };
+  note("--sport", asked.sport, stored.sport);
+  note("--mode", asked.mode, stored.mode);
+  note("--seed", std::to_string(asked.seed), std::to_string(stored.seed));
+  note("--time-limit", std::to_string(asked.time_limit_s), std::to_string(stored.time_limit_s));
+  note("--options", asked.sport_options, stored.sport_options);
+  if (cmd.get_name() == "run") {
+    note("--format", asked.format, stored.format);
+    std::string stored_entrants;
+    for (const auto& e : stored.entrants)
+      stored_entrants += (stored_entrants.empty() ? "" : ",") + e.policy +
+                         (e.policy == "zero" || e.policy == "random" || e.policy == "scripted"
+                              ? ":" + std::to_string(e.seed)
+                              : "");
+    std::string given;
+    for (const auto& e : parse_entrants(entrants, 0))
+      given += (given.empty() ? "" : ",") + e.policy +
+               (e.policy == "zero" || e.policy == "random" || e.policy == "scripted"
+                    ? ":" + std::to_string(e.seed)
+                    : "");
+    note("--entrants", given, stored_entrants);
+  } else {
+    note("--strategy", nlohmann::json::parse(asked.options).value("strategy", ""),
+         nlohmann::json::parse(stored.options).value("strategy", ""));
+  }
+  return out;
+}
+
 std::string agent_next_to_me() {
   char self[4096];
   ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
@@ -96,8 +132,10 @@ int main(int argc, char** argv) {
   run->add_option("--secret", runner.secret_file,
                   "the deployment's secret file (default $OLYMPICS_SECRET_FILE; docs/security.md)");
   run->add_option("--log-dir", runner.log_dir, "policy workers' logs");
-  bool quiet = false;
+  bool quiet = false, resume_as_stored = false;
   run->add_flag("--quiet", quiet, "no progress bar");
+  run->add_flag("--resume-as-stored", resume_as_stored,
+                "resume a tournament of this name as stored even if flags given differ");
 
   SelfplayOptions selfplay;
   std::vector<std::string> bots;
@@ -130,6 +168,8 @@ int main(int argc, char** argv) {
                     "the deployment's secret file (default $OLYMPICS_SECRET_FILE)");
     cmd->add_option("--log-dir", runner.log_dir, "policy workers' logs");
     cmd->add_flag("--quiet", quiet, "no progress bar");
+    cmd->add_flag("--resume-as-stored", resume_as_stored,
+                  "resume a run of this name as stored even if flags given differ");
   }
 
   std::string svg;
@@ -172,6 +212,14 @@ int main(int argc, char** argv) {
             spec.sport_options);
       spec.sport_options = options.dump();
       if (auto existing = store.find_tournament(name)) {
+        // A resumed run plays as it was stored; settings asked for now that differ are refused
+        // unless told to go on as stored.
+        const std::string differs = differences(*existing, spec, *run ? *run : *sp, entrants);
+        if (!differs.empty() && !resume_as_stored)
+          throw std::invalid_argument(
+              "\"" + name + "\" exists in " + db + " with other settings (" + differs +
+              "); it resumes as stored: drop those flags, pass --resume-as-stored, or choose "
+              "another --name");
         std::fprintf(stderr, "resuming %s\n", name.c_str());
         spec = *existing;
       } else {

@@ -267,7 +267,10 @@ void TournamentRunner::assign_live(const Game& g) {
 void TournamentRunner::on_result(const olympics::match_result_t& result) {
   for (auto& g : games_) {
     if (g.status != GameStatus::Dispatched || g.match_id != result.match_id) continue;
-    if (result.reason.rfind("cancelled", 0) == 0) return retry(g, result.reason);
+    // Only the server the game was given to decides it (with a secret, only a real one can).
+    if (result.server_id != g.server_id) return;
+    if (result.reason.rfind("cancelled", 0) == 0 || result.reason.rfind("aborted", 0) == 0)
+      return retry(g, result.reason);
     g.status = GameStatus::Done;
     g.home_score = result.winner_team == 0 ? 1.0 : result.winner_team == 1 ? 0.0 : 0.5;
     g.reason = result.reason;

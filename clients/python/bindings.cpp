@@ -83,16 +83,18 @@ PYBIND11_MODULE(_client, m) {
 
   py::class_<MatchClient>(m, "MatchClient")
       .def(py::init([](const std::string& lcm_url, const std::string& agent_name,
-                       const std::string& policy_id, const std::string& policy_version) {
+                       const std::string& policy_id, const std::string& policy_version,
+                       const std::string& secret_file) {
              ClientOptions o;
              o.lcm_url = lcm_url;
              o.agent_name = agent_name;
              o.policy_id = policy_id;
              o.policy_version = policy_version;
+             o.secret_file = secret_file;
              return std::make_unique<MatchClient>(o);
            }),
            py::arg("lcm_url") = "", py::arg("agent_name") = "python", py::arg("policy_id") = "",
-           py::arg("policy_version") = "")
+           py::arg("policy_version") = "", py::arg("secret_file") = "")
       .def_property_readonly("client_id", &MatchClient::client_id)
       .def(
           "request_match",

@@ -151,6 +151,17 @@ TEST_P(LeagueState, KilledWithSigkillResumesToTheSameFinalTable) {
   auto second = league(servers, db, name, dir + "/b2.log");
   ASSERT_EQ(second->wait(120), 0) << second->output();
   EXPECT_NE(second->output().find("resuming " + name), std::string::npos);
+  // Resuming with other settings is refused, unless asked to go on as stored.
+  Process other({program("olympics-league"), "run", "--db", db, "--name", name, "--sport", "tennis",
+                 "--time-limit", "9", "--lcm-url", servers.url, "--quiet"},
+                dir + "/other.log");
+  EXPECT_EQ(other.wait(30), 2);
+  EXPECT_NE(other.output().find("--sport tennis, stored sandbox"), std::string::npos)
+      << other.output();
+  Process as_stored({program("olympics-league"), "run", "--db", db, "--name", name, "--sport",
+                     "tennis", "--resume-as-stored", "--lcm-url", servers.url, "--quiet"},
+                    dir + "/as-stored.log");
+  EXPECT_EQ(as_stored.wait(30), 0) << as_stored.output();
 
   selfplay::LeagueStore a(dir + "/a.db"), b(db);
   auto board_a = selfplay::compute_leaderboard(*a.find_tournament("whole"), a.games("whole"));

@@ -113,6 +113,32 @@ class EnvAgainstRealServer(unittest.TestCase):
             "SELECT options FROM matches WHERE match_id = ?", (env.result["match_id"],)).fetchone()
         self.assertEqual(json.loads(stored[0]), options)
 
+    def test_a_secured_server_plays_with_the_secret_and_refuses_without(self):
+        secret = os.path.join(self.dir, "secret")
+        subprocess.run([f"{BIN}/olympics-server", "secret", secret], check=True, capture_output=True)
+        url = self.url.replace(str(21000 + os.getpid() % 9000), str(31000 + os.getpid() % 9000))
+        with open(os.path.join(self.dir, "secured.log"), "w") as log:
+            server = subprocess.Popen([f"{BIN}/olympics-server", "serve", "--lcm-url", url,
+                                       "--results", os.path.join(self.dir, "secured.db"),
+                                       "--id", "vault", "--secret", secret],
+                                      stdout=log, stderr=subprocess.STDOUT)
+            try:
+                time.sleep(0.3)
+                env = OlympicsParallelEnv(sport="sandbox", mode="1v1", lcm_url=url,
+                                          time_limit_s=1.0, secret_file=secret)
+                env.reset(seed=1)
+                while env.agents:
+                    env.step({a: np.zeros(69, dtype=np.float32) for a in env.agents})
+                self.assertIsNotNone(env.result)
+                stranger = OlympicsParallelEnv(sport="sandbox", mode="1v1", lcm_url=url,
+                                               timeout_s=5.0)
+                with self.assertRaises(MatchError) as caught:
+                    stranger.reset()
+                self.assertIn("UNAUTHENTICATED", str(caught.exception))
+            finally:
+                server.kill()
+                server.wait()
+
     def test_errors_reach_python(self):
         env = OlympicsParallelEnv(sport="curling", lcm_url=self.url)
         with self.assertRaises(MatchError) as caught:

@@ -20,7 +20,7 @@ class OlympicsParallelEnv:
     def __init__(self, sport="sandbox", mode="1v1", slots=None, match_id=None, request_id=None,
                  time_limit_s=0.0, realtime=False, lcm_url="", agent_name="python",
                  policy_id="", policy_version="", server_id="", timeout_s=60.0, learner=None,
-                 sport_options=None):
+                 sport_options=None, secret_file=""):
         self.sport, self.mode = sport, mode
         self.slots = None if slots is None else sorted(slots)
         self.match_id, self.request_id = match_id, request_id
@@ -30,7 +30,8 @@ class OlympicsParallelEnv:
         self.sport_options = dict(sport_options or {})
         self.learner = learner  # a league entrant live:<learner>: reset() plays what the league assigns
         self.assignment = None
-        self._client = MatchClient(lcm_url, agent_name, policy_id, policy_version)
+        # The deployment's secret file ("" = $OLYMPICS_SECRET_FILE, or none): docs/security.md.
+        self._client = MatchClient(lcm_url, agent_name, policy_id, policy_version, secret_file)
         self._episode = itertools.count()
         self._tick = None
         self.description = None

@@ -1,0 +1,190 @@
+// With a deployment secret only its holders act: a secured match plays to its stored end; a
+// client without the secret is told why it gets no answer; and an attacker on the network who
+// copies a client id from the observations, forges results or announces a fake server changes
+// nothing: its messages are dropped and counted.
+#include "auth.h"
+
+#include <atomic>
+#include <random>
+#include <thread>
+
+#include "channels.h"
+#include "league_store.h"
+#include "olympics/action_batch_t.hpp"
+#include "olympics/match_created_t.hpp"
+#include "olympics/match_result_t.hpp"
+#include "olympics/observation_batch_t.hpp"
+#include "olympics/server_announce_t.hpp"
+#include "server_fixture.h"
+#include "transport.h"
+#include "version.h"
+
+namespace olympics::testing {
+namespace {
+
+std::string new_secret(const std::string& dir) {
+  protocol::write_new_secret(dir + "/secret");
+  return dir + "/secret";
+}
+
+// An attacker without the secret, on the same network, in a thread: it reads what anyone can
+// read and sends what it likes (unsigned: it has no key).
+class Attacker {
+ public:
+  explicit Attacker(const std::string& url) : transport_(protocol::TransportOptions(url)) {}
+  ~Attacker() { stop(); }
+  // Spoofs an action for every observation it sees, with the observed client's id.
+  void spoof_actions() {
+    transport_.subscribe(std::string(protocol::kObsPrefix) + ".*",
+                         [this](const std::string&, const std::uint8_t* d, int n) {
+                           auto b = protocol::decode<olympics::observation_batch_t>(d, n);
+                           if (!b) return;
+                           olympics::action_batch_t a;
+                           a.protocol_version = protocol::kProtocolVersion;
+                           a.match_id = b->match_id, a.client_id = b->client_id, a.tick = b->tick;
+                           a.seq = b->seq + 1000, a.num_slots = b->num_slots, a.slots = b->slots;
+                           a.action_size = 69;
+                           std::uniform_real_distribution<float> u(-1, 1);
+                           a.actions.assign(b->slots.size(), std::vector<float>(69));
+                           for (auto& row : a.actions)
+                             for (auto& x : row) x = u(rng_);
+                           transport_.publish(protocol::action_channel(b->match_id), a);
+                           ++sent_;
+                         });
+    start();
+  }
+  // Answers every match created with a forged result: team 1 won at tick 1.
+  void forge_results() {
+    transport_.subscribe(protocol::kCreated, [this](const std::string&, const std::uint8_t* d,
+                                                    int n) {
+      auto c = protocol::decode<olympics::match_created_t>(d, n);
+      if (!c) return;
+      olympics::match_result_t r;
+      r.protocol_version = protocol::kProtocolVersion;
+      r.match_id = c->match_id, r.server_id = c->server_id, r.sport = c->sport, r.mode = c->mode;
+      r.ticks = 1, r.reason = "forged", r.winner_team = 1, r.num_teams = 2, r.scores = {0, 99};
+      r.num_slots = c->num_slots, r.slot_team = c->slot_team;
+      r.agent_names.assign(c->num_slots, "x"), r.policy_ids = r.agent_names;
+      r.policy_versions = r.agent_names;
+      for (int i = 0; i < 5; ++i) transport_.publish(protocol::kResult, r), ++sent_;
+    });
+    start();
+  }
+  // Announces a server "aaa" with room for 1000 matches, 10 times a second: without the secret
+  // check, every real server would leave unaddressed requests to it.
+  void fake_server() {
+    start([this] {
+      olympics::server_announce_t a;
+      a.protocol_version = protocol::kProtocolVersion;
+      a.server_id = "aaa", a.capacity = 1000, a.num_sports = 1, a.sports = {"sandbox"};
+      transport_.publish(protocol::kAnnounce, a);
+      ++sent_;
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    });
+  }
+  long sent() const { return sent_; }
+  void stop() {
+    running_ = false;
+    if (thread_.joinable()) thread_.join();
+  }
+
+ private:
+  void start(std::function<void()> also = nullptr) {
+    thread_ = std::thread([this, also] {
+      while (running_) {
+        transport_.handle(5);
+        if (also) also();
+      }
+    });
+  }
+  protocol::Transport transport_;
+  std::mt19937 rng_{5};
+  std::atomic<bool> running_{true};
+  std::atomic<long> sent_{0};
+  std::thread thread_;
+};
+
+nlohmann::json play(ServerFixture& server, const std::string& id,
+                    const std::vector<std::string>& extra) {
+  std::vector<std::string> a = {"--request-id", id,  "--slots",  "0",     "--seed", "9",
+                                "--time-limit", "2", "--policy", "random"};
+  auto b = a;
+  b[3] = "1";
+  a.insert(a.end(), extra.begin(), extra.end());
+  b.insert(b.end(), extra.begin(), extra.end());
+  auto pa = server.agent(id + "-a", a), pb = server.agent(id + "-b", b);
+  EXPECT_EQ(pa->wait(60), 0) << pa->output();
+  EXPECT_EQ(pb->wait(60), 0) << pb->output();
+  return ServerFixture::agent_result(*pa);
+}
+
+// The refusals a server counted, from the line it prints when it stops.
+long unauthenticated_refused(ServerFixture& server) {
+  server.server().signal(SIGTERM);
+  server.server().wait(20);
+  const std::string out = server.server().output();
+  const auto at = out.find(" malformed and ");
+  return at == std::string::npos ? -1 : std::stol(out.substr(at + 15));
+}
+
+TEST(Auth, ASecuredMatchPlaysAndAClientWithoutTheSecretIsToldWhy) {
+  const std::string dir = temp_dir(), secret = new_secret(dir);
+  ServerFixture server({"--secret", secret});
+  EXPECT_NE(server.server().output().find("signed and checked"), std::string::npos);
+  const auto r = play(server, "secured", {"--secret", secret});
+  ASSERT_TRUE(r.contains("match_id")) << r.dump();
+  EXPECT_TRUE(server.store()->find(r.at("match_id")).has_value());
+  auto stranger = server.agent("stranger", {"--request-id", "nope", "--slots", "0"});
+  EXPECT_EQ(stranger->wait(30), 2);
+  EXPECT_NE(stranger->output().find("UNAUTHENTICATED"), std::string::npos) << stranger->output();
+  EXPECT_NE(stranger->output().find("--secret"), std::string::npos) << stranger->output();
+}
+
+TEST(Auth, SpoofedActionsWithACopiedClientIdChangeNothing) {
+  const std::string dir = temp_dir(), secret = new_secret(dir);
+  ServerFixture quiet({"--secret", secret});
+  const auto control = play(quiet, "control", {"--secret", secret});
+  ServerFixture server({"--secret", secret});
+  Attacker attacker(server.url());
+  attacker.spoof_actions();
+  const auto attacked = play(server, "attacked", {"--secret", secret});
+  attacker.stop();
+  EXPECT_GT(attacker.sent(), 10);
+  // The same seeds and policies: the same match, to the bit.
+  ASSERT_TRUE(control.contains("match_id") && attacked.contains("match_id"));
+  EXPECT_EQ(control.at("ticks"), attacked.at("ticks"));
+  const auto hash = [](ServerFixture& s, const nlohmann::json& r) {
+    return s.replay(r.at("match_id")).header.at("result").at("state_hash").get<std::uint64_t>();
+  };
+  EXPECT_EQ(hash(quiet, control), hash(server, attacked));
+  EXPECT_GT(unauthenticated_refused(server), 10) << "the spoofed actions were dropped and counted";
+}
+
+TEST(Auth, ForgedResultsAndAFakeServerAreIgnored) {
+  const std::string url = unique_lcm_url(), dir = temp_dir(), secret = new_secret(dir);
+  ServerFixture alpha({"--secret", secret}, url, "", "alpha");
+  Attacker forger(url), faker(url);
+  forger.forge_results();
+  faker.fake_server();
+  const std::string db = dir + "/league.db";
+  Process run({program("olympics-league"), "run", "--db", db, "--name", "cup", "--entrants",
+               "zero,random:1,random:2", "--time-limit", "2", "--lcm-url", url, "--secret", secret,
+               "--log-dir", dir, "--quiet"},
+              dir + "/league.log");
+  ASSERT_EQ(run.wait(120), 0) << run.output();
+  forger.stop(), faker.stop();
+  EXPECT_GT(forger.sent(), 0);
+  selfplay::LeagueStore store(db);
+  auto records = alpha.store();
+  for (const auto& g : store.games("cup")) {
+    EXPECT_NE(g.reason, "forged");
+    EXPECT_EQ(g.server_id, "alpha") << "no game went to the fake server";
+    auto m = records->find(g.match_id);
+    ASSERT_TRUE(m) << g.match_id;
+    EXPECT_EQ(g.reason, m->reason);
+    EXPECT_EQ(g.home_score, m->winner_team == 0 ? 1.0 : m->winner_team == 1 ? 0.0 : 0.5);
+  }
+}
+
+}  // namespace
+}  // namespace olympics::testing
