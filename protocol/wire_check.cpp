@@ -1,5 +1,6 @@
 #include "wire_check.h"
 
+#include <cstring>
 #include <map>
 #include <stdexcept>
 
@@ -69,6 +70,9 @@ struct Walker {
           n = v->second;
         }
         if (n < 0) fail(where + ": negative count " + std::to_string(n));
+        // The decoder sizes each inner dimension once per element of the outer ones: behind an
+        // empty outer dimension an inner count allocates nothing, and is legal at any size.
+        if (count == 0) continue;
         if (n > size) fail(where + ": count " + std::to_string(n) + " exceeds the message");
         count *= n;
         if (count > size)
@@ -94,6 +98,10 @@ struct Walker {
             fail(where + ": string length " + std::to_string(length) + " (1.." +
                  std::to_string(left()) + " possible)");
           if (data[pos + length - 1] != 0) fail(where + ": string not NUL-terminated");
+          // LCM strings are C strings: an inner NUL would decode to a longer std::string than the
+          // encoder (strlen) writes back, so a relayed copy would not match what was received.
+          if (std::memchr(data + pos, 0, static_cast<std::size_t>(length - 1)))
+            fail(where + ": string holds a NUL before its end");
           pos += static_cast<int>(length);
         }
       } else {

@@ -4,7 +4,8 @@
 // gigabytes before noticing that the bytes run out. This walks the type's layout
 // (olympics/wire_schema.hpp, generated from the .lcm files) and refuses, naming the field:
 //   - a fingerprint other than the type's;
-//   - a string whose length is not 1..(bytes left), or that is not NUL-terminated;
+//   - a string whose length is not 1..(bytes left), that is not NUL-terminated, or that holds a
+//     NUL before its end (LCM's encoder would write it back shorter);
 //   - an array whose count is negative, or whose elements cannot fit the bytes left;
 //   - bytes running out before the last field.
 #pragma once

@@ -1,6 +1,6 @@
 // Decoding cannot crash: every well-formed message decodes, and bytes that are not one (a string
-// length of 0 or below, a negative or huge array count, truncation, random bit flips, another
-// type's fingerprint) are refused without throwing and without a large allocation.
+// length of 0 or below, an inner NUL, a negative or huge array count, truncation, random bit flips,
+// another type's fingerprint) are refused without throwing and without a large allocation.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -80,6 +80,19 @@ TEST(Decode, ZeroOrNegativeStringLengthsAreRefused) {
   }
 }
 
+// Found by tests/fuzz: LCM's decoder keeps an inner NUL that its encoder (strlen) drops, so such a
+// message would not survive being relayed. It is refused on arrival instead.
+TEST(Decode, StringsWithAnInnerNulAreRefused) {
+  auto b = encode(sample_join());
+  const int at = field_offset<olympics::join_t>(b, "agent_name") + 4;  // after the length
+  b[at + 2] = 0;                                                       // "al\0ce"
+  EXPECT_FALSE(decode<olympics::join_t>(b.data(), static_cast<int>(b.size())));
+  const auto why =
+      wire_problem("join_t", olympics::join_t::getHash(), b.data(), static_cast<int>(b.size()));
+  ASSERT_TRUE(why);
+  EXPECT_NE(why->find("agent_name: string holds a NUL"), std::string::npos) << *why;
+}
+
 TEST(Decode, NegativeAndHugeArrayCountsAreRefusedWithoutAllocating) {
   for (std::int32_t count : {-1, INT32_MIN, 1 << 30, INT32_MAX}) {
     auto b = encode(sample_join());
@@ -96,6 +109,22 @@ TEST(Decode, NegativeAndHugeArrayCountsAreRefusedWithoutAllocating) {
   a.actions = {{0.5f, 0.5f}};
   auto b = encode(a);
   put_int32(b, field_offset<olympics::action_batch_t>(b, "num_slots"), 100000);
+  EXPECT_FALSE(decode<olympics::action_batch_t>(b.data(), static_cast<int>(b.size())));
+}
+
+// Found by tests/fuzz: an action batch with no slots and a large action_size is what LCM's own
+// encoder writes for an empty batch; refusing it would refuse a relayed copy of a message we took.
+// A huge slot count with an empty action_size is still refused.
+TEST(Decode, InnerCountsBehindAnEmptyOuterArrayAreLegal) {
+  olympics::action_batch_t a;
+  a.protocol_version = kProtocolVersion;
+  a.match_id = "m", a.client_id = "c", a.num_slots = 0, a.action_size = 5000;
+  const auto empty = encode(a);
+  ASSERT_LT(empty.size(), 5000u);
+  EXPECT_TRUE(decode<olympics::action_batch_t>(empty.data(), static_cast<int>(empty.size())));
+  a.action_size = 0;
+  auto b = encode(a);
+  put_int32(b, field_offset<olympics::action_batch_t>(b, "num_slots"), 1 << 30);
   EXPECT_FALSE(decode<olympics::action_batch_t>(b.data(), static_cast<int>(b.size())));
 }
 
