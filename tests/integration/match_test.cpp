@@ -81,13 +81,15 @@ TEST(Match, SyncResultIsIdenticalWithTenPercentLoss) {
 }
 
 TEST(Match, KilledClientForfeitsAndTheServerKeepsServing) {
-  ServerFixture server({"--action-deadline-ms", "150", "--max-missed-ticks", "3"});
+  // A deadline far beyond the survivor's 40 ms of thought, however loaded the machine; the dead
+  // client misses 3 of them (or goes silent for 5 s) and forfeits.
+  ServerFixture server({"--action-deadline-ms", "1000", "--max-missed-ticks", "3"});
   auto stay = server.agent(
       "stays", {"--request-id", "k1", "--slots", "0", "--think-ms", "40", "--time-limit", "30"});
   auto dies = server.agent(
       "dies", {"--request-id", "k1", "--slots", "1", "--think-ms", "40", "--time-limit", "30"});
-  ASSERT_TRUE(dies->wait_for_output("joined", 10)) << dies->output();
-  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  ASSERT_TRUE(dies->wait_for_output("joined", 60)) << dies->output();
+  ASSERT_TRUE(stay->wait_for_output("joined", 60)) << stay->output();
   dies->signal(SIGKILL);
   ASSERT_EQ(stay->wait(30), 0) << stay->output();
   auto r = ServerFixture::agent_result(*stay);

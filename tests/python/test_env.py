@@ -4,14 +4,13 @@ import os
 import sqlite3
 import subprocess
 import tempfile
-import time
 import unittest
 
 import numpy as np
 
 from smpl_olympics import MatchError, OlympicsParallelEnv
 
-BIN = os.environ["OLYMPICS_BIN_DIR"]
+from server_process import BIN, start_server
 
 
 class EnvAgainstRealServer(unittest.TestCase):
@@ -19,16 +18,11 @@ class EnvAgainstRealServer(unittest.TestCase):
         self.dir = tempfile.mkdtemp(prefix="olympics-py-")
         self.url = f"udpm://239.255.76.67:{21000 + os.getpid() % 9000}?ttl=0&recv_buf_size=4194304"
         self.db = os.path.join(self.dir, "results.db")
-        self.log = open(os.path.join(self.dir, "server.log"), "w")
-        self.server = subprocess.Popen([f"{BIN}/olympics-server", "serve", "--lcm-url", self.url,
-                                        "--results", self.db, "--id", "py"],
-                                       stdout=self.log, stderr=subprocess.STDOUT)
-        time.sleep(0.3)
+        self.server = start_server(self.url, self.db, "py", os.path.join(self.dir, "server.log"))
 
     def tearDown(self):
         self.server.kill()
         self.server.wait()
-        self.log.close()
 
     def test_plays_a_match_against_an_agent_process(self):
         opponent = subprocess.Popen([f"{BIN}/olympics-agent", "--lcm-url", self.url, "--request-id",
@@ -117,27 +111,23 @@ class EnvAgainstRealServer(unittest.TestCase):
         secret = os.path.join(self.dir, "secret")
         subprocess.run([f"{BIN}/olympics-server", "secret", secret], check=True, capture_output=True)
         url = self.url.replace(str(21000 + os.getpid() % 9000), str(31000 + os.getpid() % 9000))
-        with open(os.path.join(self.dir, "secured.log"), "w") as log:
-            server = subprocess.Popen([f"{BIN}/olympics-server", "serve", "--lcm-url", url,
-                                       "--results", os.path.join(self.dir, "secured.db"),
-                                       "--id", "vault", "--secret", secret],
-                                      stdout=log, stderr=subprocess.STDOUT)
-            try:
-                time.sleep(0.3)
-                env = OlympicsParallelEnv(sport="sandbox", mode="1v1", lcm_url=url,
-                                          time_limit_s=1.0, secret_file=secret)
-                env.reset(seed=1)
-                while env.agents:
-                    env.step({a: np.zeros(69, dtype=np.float32) for a in env.agents})
-                self.assertIsNotNone(env.result)
-                stranger = OlympicsParallelEnv(sport="sandbox", mode="1v1", lcm_url=url,
-                                               timeout_s=5.0)
-                with self.assertRaises(MatchError) as caught:
-                    stranger.reset()
-                self.assertIn("UNAUTHENTICATED", str(caught.exception))
-            finally:
-                server.kill()
-                server.wait()
+        server = start_server(url, os.path.join(self.dir, "secured.db"), "vault",
+                              os.path.join(self.dir, "secured.log"), "--secret", secret)
+        try:
+            env = OlympicsParallelEnv(sport="sandbox", mode="1v1", lcm_url=url,
+                                      time_limit_s=1.0, secret_file=secret)
+            env.reset(seed=1)
+            while env.agents:
+                env.step({a: np.zeros(69, dtype=np.float32) for a in env.agents})
+            self.assertIsNotNone(env.result)
+            stranger = OlympicsParallelEnv(sport="sandbox", mode="1v1", lcm_url=url,
+                                           timeout_s=60.0)
+            with self.assertRaises(MatchError) as caught:
+                stranger.reset()
+            self.assertIn("UNAUTHENTICATED", str(caught.exception))
+        finally:
+            server.kill()
+            server.wait()
 
     def test_errors_reach_python(self):
         env = OlympicsParallelEnv(sport="curling", lcm_url=self.url)

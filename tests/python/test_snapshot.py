@@ -2,14 +2,13 @@
 import os
 import subprocess
 import tempfile
-import time
 import unittest
 
 import numpy as np
 
 from smpl_olympics.snapshot import export_mlp
 
-BIN = os.environ["OLYMPICS_BIN_DIR"]
+from server_process import BIN, start_server
 
 
 def forward(layers, x, mean, std):
@@ -84,23 +83,20 @@ class SnapshotRoundTrip(unittest.TestCase):
 
     def test_agent_plays_a_match_with_the_snapshot(self):
         url = f"udpm://239.255.76.67:{23000 + os.getpid() % 5000}?ttl=0&recv_buf_size=4194304"
-        with open(os.path.join(self.dir, "server.log"), "w") as log:
-            server = subprocess.Popen([f"{BIN}/olympics-server", "serve", "--lcm-url", url, "--results",
-                                       os.path.join(self.dir, "r.db"), "--id", "snap"], stdout=log,
-                                      stderr=subprocess.STDOUT)
-            try:
-                time.sleep(0.3)
-                common = [f"--lcm-url={url}", "--request-id=s", "--json", "--timeout=30"]
-                opponent = subprocess.Popen([f"{BIN}/olympics-agent", *common, "--slots=1", "--policy=zero"],
-                                            stdout=subprocess.PIPE, text=True)
-                mine = subprocess.run([f"{BIN}/olympics-agent", *common, "--slots=0", f"--policy=mlp:{self.path}",
-                                       "--name=snapshot"], capture_output=True, text=True, timeout=60)
-                opponent.communicate(timeout=60)
-                self.assertEqual(mine.returncode, 0, mine.stderr)
-                self.assertIn('"snapshot"', mine.stdout)
-            finally:
-                server.kill()
-                server.wait()
+        server = start_server(url, os.path.join(self.dir, "r.db"), "snap",
+                              os.path.join(self.dir, "server.log"))
+        try:
+            common = [f"--lcm-url={url}", "--request-id=s", "--json", "--timeout=30"]
+            opponent = subprocess.Popen([f"{BIN}/olympics-agent", *common, "--slots=1", "--policy=zero"],
+                                        stdout=subprocess.PIPE, text=True)
+            mine = subprocess.run([f"{BIN}/olympics-agent", *common, "--slots=0", f"--policy=mlp:{self.path}",
+                                   "--name=snapshot"], capture_output=True, text=True, timeout=60)
+            opponent.communicate(timeout=60)
+            self.assertEqual(mine.returncode, 0, mine.stderr)
+            self.assertIn('"snapshot"', mine.stdout)
+        finally:
+            server.kill()
+            server.wait()
 
 
 if __name__ == "__main__":
