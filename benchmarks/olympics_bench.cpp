@@ -4,6 +4,7 @@
 //   olympics-bench server  [--json] [--seconds S] [--matches M] [--workers W]
 //   olympics-bench racket  [--json] [--episodes N] [--seconds S] [--repeats R]
 //   olympics-bench combat  [--json] [--bouts N] [--seconds S] [--repeats R]
+//   olympics-bench soak    [--json] [--minutes M] [--matches N] [--workers W] (an hour; not CI)
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
@@ -11,6 +12,7 @@
 #include "physics_bench.h"
 #include "racket_bench.h"
 #include "server_bench.h"
+#include "soak_bench.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Performance figures for the humanoid sports server"};
@@ -59,6 +61,33 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   comb->add_option("--repeats", combat.repeats, "interleaved repeats (median reported)")
       ->check(CLI::PositiveNumber);
+  olympics::bench::SoakOptions soak;
+  auto* soa = app.add_subcommand(
+      "soak",
+      "one server, as many matches as hold a p99 tick cycle under budget, for an hour; "
+      "then every result audited (exit 1 if not clean or over budget)");
+  soa->add_flag("--json", json, "print one JSON object instead of a table");
+  soa->add_option("--minutes", soak.minutes, "soak length after the ramp")
+      ->check(CLI::PositiveNumber);
+  soa->add_option("--matches", soak.matches, "client matches at once (default: ramp to the most)")
+      ->check(CLI::NonNegativeNumber);
+  soa->add_option("--ramp-step", soak.ramp_step, "matches added per ramp step")
+      ->check(CLI::PositiveNumber);
+  soa->add_option("--ramp-window", soak.ramp_window_s, "wall seconds per ramp step")
+      ->check(CLI::PositiveNumber);
+  soa->add_option("--workers", soak.workers, "server worker threads (default: one per core)")
+      ->check(CLI::NonNegativeNumber);
+  soa->add_option("--match-seconds", soak.match_seconds, "simulated seconds per match")
+      ->check(CLI::PositiveNumber);
+  soa->add_option("--p99-budget-ms", soak.p99_budget_ms, "tick cycle budget")
+      ->check(CLI::PositiveNumber);
+  soa->add_option("--ramp-headroom", soak.ramp_headroom,
+                  "hold the most matches whose ramp step kept p99 under this share of the budget")
+      ->check(CLI::Range(0.05, 1.0));
+  bool no_league = false, unsigned_messages = false;
+  soa->add_flag("--no-league", no_league, "clients only");
+  soa->add_flag("--unsigned", unsigned_messages, "no deployment secret");
+  soa->add_flag("--keep", soak.keep, "keep the folder of results, replays and logs");
   CLI11_PARSE(app, argc, argv);
 
   if (*phys) {
@@ -90,6 +119,15 @@ int main(int argc, char** argv) {
       std::printf("%s\n", report.dump(2).c_str());
     else
       olympics::bench::print_combat_report(report);
+  }
+  if (*soa) {
+    soak.league = !no_league, soak.signed_messages = !unsigned_messages;
+    auto report = olympics::bench::run_soak_bench(soak);
+    if (json)
+      std::printf("%s\n", report.dump(2).c_str());
+    else
+      olympics::bench::print_soak_report(report);
+    if (!report["results_clean"].get<bool>() || !report["within_budget"].get<bool>()) return 1;
   }
   return 0;
 }

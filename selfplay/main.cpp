@@ -17,6 +17,7 @@
 #include "leaderboard.h"
 #include "league_store.h"
 #include "matchmaking.h"
+#include "process.h"
 #include "tournament_runner.h"
 
 namespace {
@@ -92,13 +93,6 @@ std::string differences(const TournamentSpec& stored, const TournamentSpec& aske
          nlohmann::json::parse(stored.options).value("strategy", ""));
   }
   return out;
-}
-
-std::string agent_next_to_me() {
-  char self[4096];
-  ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-  std::string path = n > 0 ? std::string(self, static_cast<size_t>(n)) : "olympics-league";
-  return path.substr(0, path.rfind('/') + 1) + "olympics-agent";
 }
 
 }  // namespace
@@ -227,7 +221,7 @@ int main(int argc, char** argv) {
                             : parse_entrants(entrants, 2);
         store.create_tournament(spec);
       }
-      runner.agent_program = agent_next_to_me();
+      runner.agent_program = olympics::program_beside_this_one("olympics-agent");
       runner.progress = !quiet;
       std::unique_ptr<Scheduler> scheduler;
       if (spec.format == "selfplay") {

@@ -72,6 +72,14 @@ bool Process::wait_for_output(const std::string& text, double timeout_s) {
   return false;
 }
 
+std::string program_beside_this_one(const std::string& name) {
+  char self[4096];
+  const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+  if (n <= 0) return name;  // left to PATH
+  const std::string path(self, static_cast<size_t>(n));
+  return path.substr(0, path.rfind('/') + 1) + name;
+}
+
 std::string temp_dir() {
   char tmpl[] = "/tmp/olympics-XXXXXX";
   if (!mkdtemp(tmpl)) throw std::runtime_error("mkdtemp failed");

@@ -24,6 +24,7 @@ class Process {
   std::string output() const;
   // Waits until the output contains `text`; false on timeout or exit.
   bool wait_for_output(const std::string& text, double timeout_s);
+  pid_t pid() const { return pid_; }
 
  private:
   pid_t pid_ = -1;
@@ -31,6 +32,10 @@ class Process {
   bool reaped_ = false;
   std::string log_path_;
 };
+
+// The installed program `name` in the folder of the running one (build/bin/olympics-agent
+// beside build/bin/olympics-league).
+std::string program_beside_this_one(const std::string& name);
 
 // A fresh empty directory under /tmp.
 std::string temp_dir();

@@ -8,13 +8,12 @@
 // Agents given the same --request-id share one match (the server dedupes the request), so two
 // processes can meet without passing a match id around.
 #include <CLI/CLI.hpp>
-#include <chrono>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <thread>
 
 #include "match_client.h"
+#include "play_match.h"
 #include "policies.h"
 
 namespace {
@@ -49,14 +48,6 @@ void print_calls(const olympics::client::Observation& obs) try {
   // Info of another shape than the referee writes: nothing to print.
 }
 
-// What the policies are told of the match they are about to play.
-olympics::client::MatchInfo match_info(const olympics::match_created_t& m) {
-  if (m.control_hz <= 0)
-    throw std::invalid_argument("the server sent no control rate; upgrade it to protocol 3");
-  return {m.sport, m.mode, 1.0 / m.control_hz,
-          olympics::client::ObservationLayout(m.obs_block_names, m.obs_block_sizes), m.action_size};
-}
-
 void play_one(olympics::client::MatchClient& client, const std::string& match_id,
               const std::vector<int>& slots, const std::string& policy_name,
               std::uint64_t policy_seed, const std::string& agent_name, int think_ms,
@@ -67,21 +58,11 @@ void play_one(olympics::client::MatchClient& client, const std::string& match_id
   for (int s : slots) std::fprintf(stderr, " %d", s);
   std::fprintf(stderr, " with policy %s\n", policy_name.c_str());
 
-  // One policy per slot: scripted players keep state (their gait, the ball they chase).
-  std::vector<std::unique_ptr<olympics::client::Policy>> policies;
-  for (size_t i = 0; i < slots.size(); ++i) {
-    policies.push_back(olympics::client::make_policy(policy_name, policy_seed + i));
-    policies.back()->start(match_info(match));
-  }
-  std::vector<std::vector<float>> actions(slots.size(), std::vector<float>(match.action_size));
-  while (auto obs = client.next(timeout_s)) {
-    if (calls) print_calls(*obs);
-    if (obs->all_done()) break;
-    for (size_t i = 0; i < obs->slots.size(); ++i) policies[i]->act(obs->obs[i], actions[i]);
-    if (think_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(think_ms));
-    client.act(obs->tick, actions);
-  }
-  const auto& r = client.wait_result(timeout_s);
+  olympics::client::PlayOptions play;
+  play.policy = policy_name, play.policy_seed = policy_seed, play.think_ms = think_ms;
+  play.timeout_s = timeout_s;
+  if (calls) play.on_observation = print_calls;
+  const auto& r = olympics::client::play_joined_match(client, play);
   if (json) {
     nlohmann::json out = {
         {"match_id", r.match_id}, {"sport", r.sport},        {"mode", r.mode},
