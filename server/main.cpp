@@ -2,7 +2,7 @@
 //
 //   olympics-server serve [--config FILE] [flags]     host matches until SIGINT/SIGTERM
 //   olympics-server sports                            list the sports and modes
-//   olympics-server describe SPORT [--mode M]         observation / action layout of a sport
+//   olympics-server describe [SPORT] [--mode M] [--json]  layout of a sport (or all)
 //   olympics-server results [--results DB] [--limit N] [--sport S] [--json]
 //   olympics-server replay FILE                       re-run a match, check it reproduces
 #include <CLI/CLI.hpp>
@@ -11,6 +11,7 @@
 #include <ctime>
 #include <nlohmann/json.hpp>
 
+#include "catalog.h"
 #include "core/control_rate.h"
 #include "match_host.h"
 #include "registry.h"
@@ -50,8 +51,7 @@ int serve(server::ServerConfig config) {
   return 0;
 }
 
-int describe(const std::string& sport_name, const std::string& mode_arg) {
-  const sports::Sport& sport = sports::sport_or_throw(sport_name);
+int describe_one(const sports::Sport& sport, const std::string& mode_arg) {
   std::printf("%s: %s\nmodes:", sport.name().c_str(), sport.summary().c_str());
   for (const auto& m : sport.modes().names()) std::printf(" %s", m.c_str());
   std::printf("\ndefault time limit: %g s; control at %d Hz\n", sport.default_time_limit_s(),
@@ -93,6 +93,25 @@ int describe(const std::string& sport_name, const std::string& mode_arg) {
       std::printf("    %-12s x %-5g %s\n", t.name.c_str(), t.weight, t.meaning.c_str());
     std::printf("  referee calls (info.events[].call):\n");
     for (const auto& c : l.calls) std::printf("    %-12s %s\n", c.name.c_str(), c.meaning.c_str());
+  }
+  return 0;
+}
+
+// One sport or all of them, as text or as one JSON document.
+int describe(const std::string& sport_name, const std::string& mode, bool json) {
+  if (json) {
+    if (sport_name.empty() && !mode.empty()) throw std::invalid_argument("--mode needs a sport");
+    const auto doc = sport_name.empty()
+                         ? sports::sport_catalog()
+                         : sports::describe_sport(sports::sport_or_throw(sport_name), mode);
+    std::printf("%s\n", doc.dump(1).c_str());
+    return 0;
+  }
+  if (!sport_name.empty()) return describe_one(sports::sport_or_throw(sport_name), mode);
+  if (!mode.empty()) throw std::invalid_argument("--mode needs a sport");
+  for (const auto& name : sports::sport_names()) {
+    describe_one(sports::sport_or_throw(name), "");
+    std::printf("\n");
   }
   return 0;
 }
@@ -210,8 +229,13 @@ int main(int argc, char** argv) {
   std::string sport_name, mode;
   auto* describe_cmd =
       app.add_subcommand("describe", "print a sport's observation and action layout");
-  describe_cmd->add_option("sport", sport_name, "sport name")->required();
+  bool describe_json = false;
+  describe_cmd->add_option("sport", sport_name, "sport name (none: every sport)");
   describe_cmd->add_option("--mode", mode, "one mode only");
+  describe_cmd->add_flag("--json", describe_json,
+                         "one JSON document (what the Python package ships as sports.json)");
+  std::string describe_output;
+  describe_cmd->add_option("-o,--output", describe_output, "write to this file, not stdout");
 
   std::string results_location = config.results, results_sport;
   int limit = 20;
@@ -259,7 +283,11 @@ int main(int argc, char** argv) {
       }
       return 0;
     }
-    if (*describe_cmd) return describe(sport_name, mode);
+    if (*describe_cmd) {
+      if (!describe_output.empty() && !std::freopen(describe_output.c_str(), "w", stdout))
+        throw std::runtime_error("cannot write " + describe_output);
+      return describe(sport_name, mode, describe_json);
+    }
     if (*results_cmd) return results(results_location, limit, results_sport, json);
     if (*replay_cmd) return replay(replay_file);
   } catch (const std::exception& e) {

@@ -8,7 +8,7 @@ import unittest
 
 import numpy as np
 
-from smpl_olympics import MatchError, OlympicsParallelEnv
+from smpl_olympics import MatchClient, MatchError, OlympicsParallelEnv
 
 from server_process import BIN, start_server
 
@@ -130,9 +130,15 @@ class EnvAgainstRealServer(unittest.TestCase):
             server.wait()
 
     def test_errors_reach_python(self):
-        env = OlympicsParallelEnv(sport="curling", lcm_url=self.url)
-        with self.assertRaises(MatchError) as caught:
-            env.reset()
+        with self.assertRaises(ValueError) as caught:  # the catalog knows before any server
+            OlympicsParallelEnv(sport="curling", lcm_url=self.url)
+        self.assertIn("known sports: boxing", str(caught.exception))
+        with self.assertRaises(ValueError) as caught:
+            OlympicsParallelEnv(sport="tennis", mode="3v3", lcm_url=self.url)
+        self.assertIn("its modes: ball_return, 1v1, 2v2", str(caught.exception))
+        client = MatchClient(self.url, "python", "", "", "")
+        with self.assertRaises(MatchError) as caught:  # and the server says so too
+            client.request_match("curling", "1v1", 0, 0.0, False, "py-curling", "", 60.0, "")
         self.assertIn("UNKNOWN_SPORT", str(caught.exception))
         self.assertIn("known sports: sandbox", str(caught.exception))
 

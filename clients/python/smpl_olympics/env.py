@@ -1,21 +1,26 @@
-"""A PettingZoo-parallel-style environment over a real match on an olympics-server.
+"""A PettingZoo parallel environment over a real match on an olympics-server.
 
 Agents are named "slot_<k>" for the slots this client plays. reset() requests a match (or joins
 the one named by match_id) and returns the first observations; step() sends one action per live
-agent and returns the next tick's observations, rewards, terminations, truncations and infos, as
-PettingZoo's ParallelEnv does. Agents whose slot is done leave env.agents.
+agent and returns the next tick's observations, rewards, terminations, truncations and infos for
+the agents that were live, as PettingZoo's ParallelEnv does. Agents whose slot is done leave
+env.agents and the following steps' dicts. possible_agents and the spaces come from the sports
+catalog, so they are valid before reset(); the spaces are cached objects whose bounds admit every
+observation the server sends.
 """
 import itertools
 import json
-import os
 
 import numpy as np
 
+from . import catalog
 from ._client import MatchClient
+from .spaces import box
 
 
 class OlympicsParallelEnv:
-    metadata = {"name": "smpl_olympics", "render_modes": []}
+    metadata = {"name": "smpl_olympics", "render_modes": [], "is_parallelizable": True}
+    render_mode = None
 
     def __init__(self, sport="sandbox", mode="1v1", slots=None, match_id=None, request_id=None,
                  time_limit_s=0.0, realtime=False, lcm_url="", agent_name="python",
@@ -35,30 +40,69 @@ class OlympicsParallelEnv:
         self._episode = itertools.count()
         self._tick = None
         self.description = None
-        self.obs_blocks = {}  # block name -> slice of an observation, set by reset()
         self.result = None
         self.agents = []
-        self.possible_agents = []
+        self._last_obs = {}
+        self._use_mode(sport, mode, self.slots)
 
-    # Spaces as shapes: gymnasium is optional.
+    def _use_mode(self, sport, mode, slots):
+        """Agents, spaces and observation blocks of a sport's mode, from the catalog."""
+        spec = catalog.mode(sport, mode)
+        self._spec = spec
+        if slots is None:
+            slots = range(len(spec["slot_teams"]))
+        self.possible_agents = [f"slot_{s}" for s in slots]
+        obs_space, act_space = catalog.observation_space(spec), catalog.action_space(spec)
+        self.observation_spaces = {a: obs_space for a in self.possible_agents}
+        self.action_spaces = {a: act_space for a in self.possible_agents}
+        self.state_space = box(np.tile(obs_space.low, len(self.possible_agents)),
+                               np.tile(obs_space.high, len(self.possible_agents)))
+        self.obs_blocks, at = {}, 0  # block name -> slice of an observation
+        for b in spec["observation"]:
+            self.obs_blocks[b["name"]] = slice(at, at + b["size"])
+            at += b["size"]
+
+    @property
+    def num_agents(self):
+        return len(self.agents)
+
+    @property
+    def max_num_agents(self):
+        return len(self.possible_agents)
+
     def observation_size(self, agent=None):
-        return self.description["obs_size"]
+        return self._spec["obs_size"]
 
     def action_size(self, agent=None):
-        return self.description["action_size"]
+        return self._spec["action_size"]
 
     def observation_space(self, agent):
-        return _box(self.description["obs_size"], 5.0)
+        return self.observation_spaces[agent]
 
     def action_space(self, agent):
-        return _box(self.description["action_size"], 1.0)
+        """Nominal range [-1, 1] (target = scale * a); the server accepts any finite value."""
+        return self.action_spaces[agent]
+
+    def state(self):
+        """The global state this client sees: the latest observations of possible_agents, in
+        slot order, concatenated (zeros for an agent not observed yet)."""
+        size = self._spec["obs_size"]
+        return np.concatenate([self._last_obs.get(a, np.zeros(size, dtype=np.float32))
+                               for a in self.possible_agents])
+
+    def render(self):
+        """Nothing to draw here: watch the match's replay (docs/clients.md)."""
+        return None
 
     def reset(self, seed=None, options=None):
         """Start a new match: returns (observations, infos).
 
         Without match_id, each reset requests a new match with request id "<request_id>-<n>"
         (n = 0, 1, ... per reset), so an opponent process given the same id meets this env.
+        Without a seed, each reset draws a fresh one (the match's seed is in env.description).
         """
+        if seed is None:
+            seed = int(np.random.SeedSequence().entropy % (1 << 62))
         match_id, slots = self.match_id, self.slots
         if self.learner is not None:
             self.assignment = self._client.wait_assignment(self.learner, max(self.timeout_s, 600.0))
@@ -67,7 +111,7 @@ class OlympicsParallelEnv:
             episode = next(self._episode)
             base = self.request_id if self.request_id is not None else self._client.client_id
             created = self._client.request_match(
-                self.sport, self.mode, seed or 0, self.time_limit_s, self.realtime,
+                self.sport, self.mode, seed, self.time_limit_s, self.realtime,
                 f"{base}-{episode}", self.server_id, self.timeout_s,
                 json.dumps(self.sport_options) if self.sport_options else "")
             match_id = created["match_id"]
@@ -76,15 +120,19 @@ class OlympicsParallelEnv:
         elif slots is None:
             raise ValueError("pass slots=[...] to join a match by its id")
         self.description = self._client.join(match_id, slots, self.timeout_s)
-        self.obs_blocks, at = {}, 0
-        for name, size in self.description["obs_blocks"]:
-            self.obs_blocks[name] = slice(at, at + size)
-            at += size
-        self.possible_agents = [f"slot_{s}" for s in slots]
+        self._use_mode(self.description["sport"], self.description["mode"], slots)
+        served = [(n, s) for n, s in self.description["obs_blocks"]]
+        known = [(b["name"], b["size"]) for b in self._spec["observation"]]
+        if served != known:
+            raise RuntimeError(
+                f"the server's {self.description['sport']}/{self.description['mode']} observation "
+                f"blocks {served} differ from this package's catalog {known}: use the Python "
+                "package built with that server")
         self.agents = list(self.possible_agents)
         self.result = None
+        self._last_obs = {}
         batch = self._client.next(self.timeout_s)
-        observations, _, _, _, infos = self._unpack(batch)
+        observations, _, _, _, infos = self._unpack(batch, self.agents)
         return observations, infos
 
     def step(self, actions):
@@ -101,7 +149,7 @@ class OlympicsParallelEnv:
             ended = {a: True for a in self.agents}
             self.agents = []
             return {}, {}, ended, {a: False for a in ended}, {}
-        observations, rewards, terminations, truncations, infos = self._unpack(batch)
+        observations, rewards, terminations, truncations, infos = self._unpack(batch, self.agents)
         self.agents = [a for a in self.agents if not (terminations[a] or truncations[a])]
         if not self.agents:
             self.result = self._client.wait_result(self.timeout_s)
@@ -118,7 +166,8 @@ class OlympicsParallelEnv:
             raise KeyError(f"no observation block {name!r}; blocks: {', '.join(self.obs_blocks)}")
         return observation[self.obs_blocks[name]]
 
-    def _unpack(self, batch):
+    def _unpack(self, batch, live):
+        """The batch's entries for the agents in `live` (those that finished earlier drop out)."""
         self._tick = batch["tick"]
         try:
             info = json.loads(batch["info"]) if batch["info"] else {}
@@ -127,6 +176,9 @@ class OlympicsParallelEnv:
         observations, rewards, terminations, truncations, infos = {}, {}, {}, {}, {}
         for i, slot in enumerate(batch["slots"]):
             agent = f"slot_{slot}"
+            self._last_obs[agent] = batch["obs"][i]
+            if agent not in live:
+                continue
             observations[agent] = batch["obs"][i]
             rewards[agent] = float(batch["reward"][i])
             truncations[agent] = bool(batch["truncated"][i])
@@ -136,10 +188,3 @@ class OlympicsParallelEnv:
                             "match": info}
         return observations, rewards, terminations, truncations, infos
 
-
-def _box(size, bound):
-    try:
-        import gymnasium
-        return gymnasium.spaces.Box(-bound, bound, shape=(size,), dtype=np.float32)
-    except ImportError:
-        return (size,)
