@@ -1,86 +1,23 @@
-// The C++ client library: request or join a match, receive observation batches, send action
-// batches, get the result. It handles datagram loss (resends joins, requests and actions, drops
-// duplicate observations) and sends heartbeats, so a policy loop only calls next() and act().
+// The C++ client library for one match at a time: request or join a match, receive observation
+// batches, send action batches, get the result. It handles datagram loss (resends joins,
+// requests and actions, drops duplicate observations) and sends heartbeats, so a policy loop
+// only calls next() and act(). For many matches at once through one connection: VectorClient.
 #pragma once
 
-#include <chrono>
-#include <cstdint>
-#include <map>
+#include <memory>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "olympics/error_t.hpp"
-#include "olympics/match_created_t.hpp"
-#include "olympics/match_result_t.hpp"
-#include "transport.h"
+#include "connection.h"
+#include "match_session.h"
 
 namespace olympics::client {
-
-// The server refused something (its error code and message), or nothing answered in time.
-class MatchError : public std::runtime_error {
- public:
-  MatchError(std::string code, const std::string& message)
-      : std::runtime_error(code + ": " + message), code_(std::move(code)) {}
-  const std::string& code() const { return code_; }
-
- private:
-  std::string code_;
-};
-
-struct ClientOptions {
-  std::string lcm_url;  // empty: the default loopback multicast
-  std::string agent_name = "agent";
-  std::string policy_id;
-  std::string policy_version;
-  double resend_interval_s = 0.03;
-  double heartbeat_interval_s = 0.5;
-  // The match's server not announcing for this long (it announces every second), or announcing
-  // another boot, ends the wait for the match: SERVER_GONE / SERVER_RESTARTED.
-  double server_silence_s = 5.0;
-  double drop_rate = 0;  // TEST ONLY: drop this share of sent datagrams
-  std::uint64_t drop_seed = 1;
-  // The deployment's secret file ("" = $OLYMPICS_SECRET_FILE, or none): messages are signed and
-  // checked (docs/security.md).
-  std::string secret_file;
-};
-
-// A league's word to a live learner: play these slots of this match.
-struct Assignment {
-  std::string league, learner, match_id, opponent;
-  int game = 0;
-  std::vector<int> slots;
-};
-
-struct MatchRequest {
-  std::string sport = "sandbox";
-  std::string mode = "1v1";
-  std::int64_t seed = 0;
-  double time_limit_s = 0;  // 0: the sport's default
-  bool realtime = false;
-  std::string request_id;  // clients sending the same id get the same match
-  std::string server_id;   // "" = any server
-  std::string options;     // the sport's settings, a JSON object ("" = defaults)
-};
-
-// One tick's observations for the slots this client owns, in slot order.
-struct Observation {
-  int tick = 0;
-  std::vector<int> slots;
-  std::vector<std::vector<float>> obs;
-  std::vector<float> reward;
-  std::vector<std::string> term_names;
-  std::vector<std::vector<float>> terms;
-  std::vector<bool> done, truncated;
-  std::string info;  // JSON
-  bool all_done() const;
-};
 
 class MatchClient {
  public:
   explicit MatchClient(const ClientOptions& options = {});
-  const std::string& client_id() const { return client_id_; }
+  const std::string& client_id() const { return connection_.client_id(); }
 
   olympics::match_created_t request_match(const MatchRequest& request, double timeout_s = 10);
   // Waits for the league to assign a match to the live learner `learner` (an entrant
@@ -96,50 +33,23 @@ class MatchClient {
   void act(int tick, const std::vector<std::vector<float>>& actions);
   // Waits for the result after the final observation (resending what is needed to get it).
   const olympics::match_result_t& wait_result(double timeout_s = 30);
-  const std::optional<olympics::match_result_t>& result() const { return result_; }
+  std::optional<olympics::match_result_t> result() const;
   // Errors the server addressed to this client (or to no client) since the last call.
-  std::vector<olympics::error_t> take_errors();
-  const olympics::match_created_t& match() const { return match_; }
+  std::vector<olympics::error_t> take_errors() { return connection_.take_errors(); }
+  const olympics::match_created_t& match() const;
 
  private:
-  using Clock = std::chrono::steady_clock;
-  void pump(Clock::time_point until);
-  // Throws when the match cannot go on: a fatal error about it, or its server gone or restarted.
-  void fail_if_match_lost();
-  void heartbeat_if_due();
-  void resend_if_due();
-
-  ClientOptions options_;
-  std::string client_id_;
-  protocol::Transport transport_;
-  olympics::match_created_t match_;
-  std::vector<int> slots_;
-  bool joined_ = false;
-  int obs_subscription_ = -1;
-  std::string pending_request_id_;
-  std::optional<olympics::match_created_t> created_;
-  std::optional<bool> join_accepted_;
-  std::string join_refusal_;
-  std::optional<Observation> latest_;  // newest unseen observation
-  int last_returned_tick_ = -1;
-  std::vector<std::uint8_t> last_action_bytes_;
-  int last_action_tick_ = -1;
-  std::int64_t seq_ = 0;
-  std::optional<olympics::match_result_t> result_;
-  std::vector<Assignment> assignments_;  // heard, not yet handed out
-  std::vector<std::string> assigned_matches_;
-  std::vector<olympics::error_t> errors_;
-  Clock::time_point last_heartbeat_, last_send_;
-  struct ServerSeen {
-    Clock::time_point when;
-    std::int64_t boot_us = 0;
-  };
-  std::map<std::string, ServerSeen> servers_;  // by id, from their announcements
-  std::int64_t match_server_boot_ = 0;         // the match's server's boot when we joined
-  Clock::time_point joined_at_;
-  static constexpr double kMaxResendGapS = 0.25;
-  static constexpr size_t kMaxQueued = 1000;  // errors, assignments kept until taken
-  double resend_gap_s_ = 0.03;
+  MatchSession& session(const char* what);
+  Connection connection_;
+  std::unique_ptr<MatchSession> session_;
 };
+
+// Requests a match through `connection` (resending until answered); throws MatchError on a
+// refusal or when no server answers in `timeout_s`.
+olympics::match_created_t request_match(Connection& connection, const MatchRequest& request,
+                                        double timeout_s);
+// Joins `slots` of a match (resending until answered); throws MatchError when refused.
+olympics::match_created_t join_match(Connection& connection, const std::string& match_id,
+                                     const std::vector<int>& slots, double timeout_s);
 
 }  // namespace olympics::client

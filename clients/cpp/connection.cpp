@@ -1,0 +1,203 @@
+#include "connection.h"
+
+#include <unistd.h>
+
+#include <random>
+
+#include "channels.h"
+#include "olympics/join_reply_t.hpp"
+#include "olympics/join_t.hpp"
+#include "olympics/league_assignment_t.hpp"
+#include "olympics/server_announce_t.hpp"
+#include "version.h"
+
+namespace olympics::client {
+namespace {
+
+std::string random_id() {
+  std::random_device rd;
+  std::mt19937_64 rng((static_cast<std::uint64_t>(rd()) << 32) ^ rd() ^
+                      static_cast<std::uint64_t>(getpid()));
+  char buf[24];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(rng()));
+  return buf;
+}
+
+// A match description a policy can rely on: the blocks add up to the observation, sizes are sane.
+bool described_consistently(const olympics::match_created_t& m) {
+  long blocks = 0;
+  for (int size : m.obs_block_sizes) blocks += size;
+  return m.obs_size > 0 && m.obs_size <= 1'000'000 && blocks == m.obs_size && m.action_size > 0 &&
+         m.action_size <= 100'000 && m.control_hz > 0;
+}
+
+template <typename T>
+void push_bounded(std::deque<T>& queue, T item, size_t capacity) {
+  if (queue.size() >= capacity) queue.pop_front();
+  queue.push_back(std::move(item));
+}
+
+}  // namespace
+
+std::chrono::steady_clock::duration seconds(double s) {
+  return std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+      std::chrono::duration<double>(s));
+}
+
+Connection::Connection(const ClientOptions& options)
+    : options_(options),
+      client_id_(options.agent_name + "-" + random_id()),
+      transport_({options.lcm_url, options.drop_rate, options.drop_seed,
+                  protocol::load_secret(options.secret_file)}) {
+  transport_.subscribe_to<olympics::match_created_t>(
+      protocol::kCreated, [this](const std::string&, const olympics::match_created_t& m) {
+        if (pending_requests_.count(m.request_id)) created_[m.request_id] = m;
+      });
+  transport_.subscribe_to<olympics::join_reply_t>(
+      protocol::kJoinReply, [this](const std::string&, const olympics::join_reply_t& m) {
+        if (m.client_id != client_id_) return;
+        if (m.accepted && !described_consistently(m.match)) return transport_.count_malformed();
+        join_replies_[m.match_id] = {m.accepted != 0, m.reason, m.match};
+      });
+  transport_.subscribe_to<olympics::error_t>(
+      protocol::kError, [this](const std::string&, const olympics::error_t& m) {
+        bool about_my_request = false;
+        if (m.client_id.empty())
+          for (const auto& id : pending_requests_)
+            if (m.message.find(id) != std::string::npos) about_my_request = true;
+        if (m.client_id == client_id_ || about_my_request) push_bounded(errors_, m, kMaxQueued);
+      });
+  transport_.subscribe_to<olympics::league_assignment_t>(
+      protocol::kLeague, [this](const std::string&, const olympics::league_assignment_t& a) {
+        if (assigned_matches_.count(a.match_id)) return;
+        for (const auto& queued : assignments_)
+          if (queued.match_id == a.match_id) return;
+        push_bounded(assignments_, {a.league, a.learner, a.match_id, a.opponent, a.game, a.slots},
+                     kMaxQueued);
+      });
+  transport_.subscribe_to<olympics::match_result_t>(
+      protocol::kResult, [this](const std::string&, const olympics::match_result_t& m) {
+        if (auto it = watched_.find(m.match_id); it != watched_.end()) it->second = m;
+      });
+  transport_.subscribe_to<olympics::server_announce_t>(
+      protocol::kAnnounce, [this](const std::string&, const olympics::server_announce_t& a) {
+        if (servers_.size() < kMaxQueued || servers_.count(a.server_id))
+          servers_[a.server_id] = {Clock::now(), a.boot_us};
+      });
+}
+
+void Connection::pump(Clock::time_point until) {
+  int ms = static_cast<int>(
+      std::chrono::duration_cast<std::chrono::milliseconds>(until - Clock::now()).count());
+  transport_.handle(std::max(0, std::min(ms, 10)));
+}
+
+void Connection::drain() {
+  while (transport_.handle(0)) {
+  }
+}
+
+olympics::match_request_t Connection::request_message(const MatchRequest& r,
+                                                      const std::string& request_id) {
+  olympics::match_request_t req;
+  req.protocol_version = protocol::kProtocolVersion;
+  req.request_id = request_id;
+  req.server_id = r.server_id;
+  req.sport = r.sport;
+  req.mode = r.mode;
+  req.seed = r.seed;
+  req.time_limit_s = static_cast<float>(r.time_limit_s);
+  req.realtime = r.realtime;
+  req.options = r.options;
+  return req;
+}
+
+void Connection::send_request(const olympics::match_request_t& request) {
+  pending_requests_.insert(request.request_id);
+  transport_.publish(protocol::kRequest, request);
+}
+
+std::optional<olympics::match_created_t> Connection::take_created(const std::string& request_id) {
+  auto it = created_.find(request_id);
+  if (it == created_.end()) return std::nullopt;
+  auto created = std::move(it->second);
+  created_.erase(it);
+  pending_requests_.erase(request_id);
+  return created;
+}
+
+std::optional<olympics::error_t> Connection::request_error(const std::string& request_id) const {
+  for (const auto& e : errors_)
+    if (e.client_id.empty() && e.message.find(request_id) != std::string::npos) return e;
+  return std::nullopt;
+}
+
+void Connection::send_join(const std::string& match_id, const std::vector<int>& slots) {
+  olympics::join_t j;
+  j.protocol_version = protocol::kProtocolVersion;
+  j.match_id = match_id;
+  j.client_id = client_id_;
+  j.agent_name = options_.agent_name;
+  j.policy_id = options_.policy_id;
+  j.policy_version = options_.policy_version;
+  j.num_slots = static_cast<int>(slots.size());
+  j.slots = slots;
+  transport_.publish(protocol::kJoin, j);
+}
+
+std::optional<JoinReply> Connection::take_join_reply(const std::string& match_id) {
+  auto it = join_replies_.find(match_id);
+  if (it == join_replies_.end()) return std::nullopt;
+  auto reply = std::move(it->second);
+  join_replies_.erase(it);
+  return reply;
+}
+
+std::optional<olympics::error_t> Connection::fatal_error(const std::string& match_id,
+                                                         bool joining) const {
+  for (const auto& e : errors_) {
+    if ((e.code == "UNKNOWN_MATCH" || e.code == "STORE_FAILED") && e.match_id == match_id) return e;
+    if (joining &&
+        (e.code == "UNAUTHENTICATED" || e.code == "UPGRADE" || e.code == "UNKNOWN_MATCH") &&
+        (e.match_id.empty() || e.match_id == match_id))
+      return e;
+  }
+  return std::nullopt;
+}
+
+void Connection::watch(const std::string& match_id) { watched_.emplace(match_id, std::nullopt); }
+
+const olympics::match_result_t* Connection::result(const std::string& match_id) const {
+  auto it = watched_.find(match_id);
+  return it != watched_.end() && it->second ? &*it->second : nullptr;
+}
+
+void Connection::forget(const std::string& match_id) {
+  watched_.erase(match_id);
+  std::erase_if(errors_, [&](const olympics::error_t& e) { return e.match_id == match_id; });
+}
+
+std::optional<Connection::ServerSeen> Connection::server(const std::string& server_id) const {
+  auto it = servers_.find(server_id);
+  if (it == servers_.end()) return std::nullopt;
+  return it->second;
+}
+
+std::optional<Assignment> Connection::take_assignment(const std::string& learner) {
+  for (auto it = assignments_.begin(); it != assignments_.end(); ++it) {
+    if (it->learner != learner) continue;
+    Assignment a = *it;
+    assigned_matches_.insert(a.match_id);
+    assignments_.erase(it);
+    return a;
+  }
+  return std::nullopt;
+}
+
+std::vector<olympics::error_t> Connection::take_errors() {
+  std::vector<olympics::error_t> out(errors_.begin(), errors_.end());
+  errors_.clear();
+  return out;
+}
+
+}  // namespace olympics::client

@@ -1,0 +1,130 @@
+#include "match_session.h"
+
+#include <algorithm>
+
+#include "channels.h"
+#include "olympics/action_batch_t.hpp"
+#include "olympics/heartbeat_t.hpp"
+#include "olympics/observation_batch_t.hpp"
+#include "version.h"
+
+namespace olympics::client {
+
+bool Observation::all_done() const {
+  return std::all_of(done.begin(), done.end(), [](bool d) { return d; });
+}
+
+MatchSession::MatchSession(Connection& connection, olympics::match_created_t match,
+                           std::vector<int> slots)
+    : connection_(connection), match_(std::move(match)), slots_(std::move(slots)) {
+  std::sort(slots_.begin(), slots_.end());
+  connection_.watch(match_.match_id);
+  obs_subscription_ = connection_.transport().subscribe_to<olympics::observation_batch_t>(
+      match_.obs_channel, [this](const std::string&, const olympics::observation_batch_t& b) {
+        if (b.client_id != connection_.client_id() || b.match_id != match_.match_id ||
+            b.tick <= last_taken_tick_)
+          return;  // ours, and new
+        // The shape the match described: another one would send a policy out of bounds.
+        if (b.slots != slots_ || b.obs_size != match_.obs_size)
+          return connection_.transport().count_malformed();
+        if (latest_ && latest_->tick >= b.tick) return;
+        Observation o;
+        o.tick = b.tick;
+        o.slots = b.slots;
+        o.obs = b.obs;
+        o.reward = b.reward;
+        o.term_names = b.term_names;
+        o.terms = b.terms;
+        o.done.assign(b.done.begin(), b.done.end());
+        o.truncated.assign(b.truncated.begin(), b.truncated.end());
+        o.info = b.info;
+        latest_ = std::move(o);
+      });
+  joined_at_ = last_heartbeat_ = Clock::now();
+}
+
+MatchSession::~MatchSession() {
+  connection_.transport().unsubscribe(obs_subscription_);
+  connection_.forget(match_.match_id);
+}
+
+std::optional<Observation> MatchSession::take_observation() {
+  if (!latest_) return std::nullopt;
+  Observation o = std::move(*latest_);
+  latest_.reset();
+  last_taken_tick_ = o.tick;
+  return o;
+}
+
+void MatchSession::act(int tick, const std::vector<std::vector<float>>& actions) {
+  if (actions.size() != slots_.size())
+    throw MatchError("BAD_ACTION", "act() got " + std::to_string(actions.size()) + " actions for " +
+                                       std::to_string(slots_.size()) + " slots");
+  olympics::action_batch_t b;
+  b.protocol_version = protocol::kProtocolVersion;
+  b.match_id = match_.match_id;
+  b.client_id = connection_.client_id();
+  b.seq = ++seq_;
+  b.tick = tick;
+  b.num_slots = static_cast<int>(slots_.size());
+  b.slots = slots_;
+  b.action_size = actions.empty() ? 0 : static_cast<int>(actions[0].size());
+  b.actions = actions;
+  last_action_bytes_ = protocol::encode(b);
+  connection_.transport().publish_raw(match_.action_channel, last_action_bytes_.data(),
+                                      static_cast<int>(last_action_bytes_.size()));
+  last_send_ = Clock::now();
+}
+
+void MatchSession::maintain() {
+  fail_if_lost();
+  const auto now = Clock::now();
+  const auto& options = connection_.options();
+  if (now - last_heartbeat_ >= seconds(options.heartbeat_interval_s)) {
+    olympics::heartbeat_t h;
+    h.protocol_version = protocol::kProtocolVersion;
+    h.match_id = match_.match_id;
+    h.client_id = connection_.client_id();
+    h.timestamp_us = std::chrono::duration_cast<std::chrono::microseconds>(
+                         std::chrono::system_clock::now().time_since_epoch())
+                         .count();
+    connection_.transport().publish(protocol::kHeartbeat, h);
+    last_heartbeat_ = now;
+  }
+  // Our last action may have been lost: while the next observation has not come, send it
+  // again (a server that has finished answers it with the result).
+  if (!latest_ && !last_action_bytes_.empty() &&
+      now - last_send_ >= seconds(options.resend_interval_s)) {
+    connection_.transport().publish_raw(match_.action_channel, last_action_bytes_.data(),
+                                        static_cast<int>(last_action_bytes_.size()));
+    last_send_ = now;
+  }
+}
+
+const olympics::match_result_t* MatchSession::result() const {
+  return connection_.result(match_.match_id);
+}
+
+void MatchSession::fail_if_lost() {
+  // A joined client passed the version and signature checks: in play, only these end it.
+  if (auto e = connection_.fatal_error(match_.match_id)) throw MatchError(e->code, e->message);
+  const auto seen = connection_.server(match_.server_id);
+  const auto silence = seconds(connection_.options().server_silence_s);
+  if (!seen) {
+    if (Clock::now() - joined_at_ > silence)
+      throw MatchError("SERVER_GONE", "server " + match_.server_id + " of match " +
+                                          match_.match_id + " has not announced itself since " +
+                                          "the join: it is gone, or on another network");
+    return;
+  }
+  if (server_boot_ == 0) server_boot_ = seen->boot_us;
+  if (seen->boot_us != server_boot_)
+    throw MatchError("SERVER_RESTARTED", "server " + match_.server_id + " restarted: match " +
+                                             match_.match_id + " is lost");
+  if (Clock::now() - seen->when > silence)
+    throw MatchError("SERVER_GONE", "server " + match_.server_id +
+                                        " stopped announcing itself: match " + match_.match_id +
+                                        " is lost");
+}
+
+}  // namespace olympics::client
