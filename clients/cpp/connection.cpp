@@ -126,9 +126,13 @@ std::optional<olympics::match_created_t> Connection::take_created(const std::str
   return created;
 }
 
-std::optional<olympics::error_t> Connection::request_error(const std::string& request_id) const {
-  for (const auto& e : errors_)
-    if (e.client_id.empty() && e.message.find(request_id) != std::string::npos) return e;
+std::optional<olympics::error_t> Connection::take_request_error(const std::string& request_id) {
+  for (auto it = errors_.begin(); it != errors_.end(); ++it)
+    if (it->client_id.empty() && it->message.find(request_id) != std::string::npos) {
+      auto e = std::move(*it);
+      errors_.erase(it);
+      return e;
+    }
   return std::nullopt;
 }
 

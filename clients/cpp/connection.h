@@ -93,8 +93,9 @@ class Connection {
                                                    const std::string& request_id);
   void send_request(const olympics::match_request_t& request);
   std::optional<olympics::match_created_t> take_created(const std::string& request_id);
-  // An error the server sent about this request (its message names the request id).
-  std::optional<olympics::error_t> request_error(const std::string& request_id) const;
+  // An error the server sent about this request (its message names the request id), taken
+  // from the queue.
+  std::optional<olympics::error_t> take_request_error(const std::string& request_id);
 
   // Joins: send (again, until answered) and collect the reply.
   void send_join(const std::string& match_id, const std::vector<int>& slots);

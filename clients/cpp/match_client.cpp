@@ -12,7 +12,7 @@ olympics::match_created_t request_match(Connection& c, const MatchRequest& r, do
   auto next_send = Connection::Clock::now();
   for (;;) {
     if (auto created = c.take_created(id)) return *created;
-    if (auto e = c.request_error(id)) throw MatchError(e->code, e->message);
+    if (auto e = c.take_request_error(id)) throw MatchError(e->code, e->message);
     auto now = Connection::Clock::now();
     if (now >= deadline)
       throw MatchError("TIMEOUT", "no server answered the request for " + r.sport + " " + r.mode +

@@ -1,5 +1,7 @@
 // Python bindings over the C++ client (module smpl_olympics._client). Blocking calls release the
 // GIL; observations arrive as float32 numpy arrays of shape (slots, obs_size).
+#include "bindings.h"
+
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -42,24 +44,6 @@ py::dict describe(const olympics::match_created_t& m) {
   return d;
 }
 
-py::dict result_dict(const olympics::match_result_t& r) {
-  py::dict d;
-  d["match_id"] = r.match_id;
-  d["sport"] = r.sport;
-  d["mode"] = r.mode;
-  d["seed"] = r.seed;
-  d["ticks"] = r.ticks;
-  d["duration_s"] = r.duration_s;
-  d["reason"] = r.reason;
-  d["winner_team"] = r.winner_team;
-  d["scores"] = r.scores;
-  d["slot_team"] = r.slot_team;
-  d["agent_names"] = r.agent_names;
-  d["options"] = r.options;
-  d["info"] = r.info;
-  return d;
-}
-
 py::object observation_dict(const std::optional<Observation>& o) {
   if (!o) return py::none();
   py::dict d;
@@ -77,9 +61,32 @@ py::object observation_dict(const std::optional<Observation>& o) {
 
 }  // namespace
 
+namespace olympics::python {
+py::dict result_dict(const olympics::match_result_t& r) {
+  py::dict d;
+  d["match_id"] = r.match_id;
+  d["sport"] = r.sport;
+  d["mode"] = r.mode;
+  d["seed"] = r.seed;
+  d["ticks"] = r.ticks;
+  d["duration_s"] = r.duration_s;
+  d["reason"] = r.reason;
+  d["winner_team"] = r.winner_team;
+  d["scores"] = r.scores;
+  d["slot_team"] = r.slot_team;
+  d["agent_names"] = r.agent_names;
+  d["options"] = r.options;
+  d["info"] = r.info;
+  return d;
+}
+}  // namespace olympics::python
+
+using olympics::python::result_dict;
+
 PYBIND11_MODULE(_client, m) {
   m.doc() = "SMPL Olympics match client (C++ MatchClient over LCM)";
   py::register_exception<MatchError>(m, "MatchError", PyExc_RuntimeError);
+  olympics::python::bind_vector_client(m);
 
   py::class_<MatchClient>(m, "MatchClient")
       .def(py::init([](const std::string& lcm_url, const std::string& agent_name,

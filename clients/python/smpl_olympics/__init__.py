@@ -10,5 +10,6 @@
 """
 from ._client import MatchClient, MatchError
 from .env import OlympicsParallelEnv
+from .vector_env import OlympicsVectorEnv
 
-__all__ = ["MatchClient", "MatchError", "OlympicsParallelEnv"]
+__all__ = ["MatchClient", "MatchError", "OlympicsParallelEnv", "OlympicsVectorEnv"]

@@ -1,0 +1,261 @@
+#include "vector_client.h"
+
+#include <algorithm>
+
+namespace olympics::client {
+namespace {
+constexpr double kResendS = 0.25;         // requests and joins, until answered
+constexpr double kResultWaitS = 30;       // how long an ended match is kept to hear its result
+constexpr double kMaintainEveryS = 0.05;  // heartbeats of environments not waiting
+}  // namespace
+
+struct VectorClient::Env {
+  enum class Phase { kRequesting, kJoining, kPlaying };
+  int index = 0;
+  int episode = -1;
+  Phase phase = Phase::kRequesting;
+  olympics::match_request_t request;
+  std::string match_id;
+  Connection::Clock::time_point next_send, last_progress;
+  std::unique_ptr<MatchSession> session;
+  bool waiting = false;              // its next observation is owed to the caller
+  int tick = -1;                     // of the observation handed out last
+  std::optional<Observation> ready;  // the next observation, once here
+  std::optional<Observation> final;  // the ended match's last one, when it just ended
+  std::optional<Observation> last;   // the last one handed out
+};
+
+VectorClient::VectorClient(const ClientOptions& options, VectorSettings settings)
+    : connection_(options), settings_(std::move(settings)), slots_(settings_.slots) {
+  if (settings_.num_envs < 1) throw std::invalid_argument("num_envs must be at least 1");
+  if (settings_.request_prefix.empty()) settings_.request_prefix = connection_.client_id();
+  std::sort(slots_.begin(), slots_.end());
+  for (int e = 0; e < settings_.num_envs; ++e) {
+    envs_.push_back(std::make_unique<Env>());
+    envs_.back()->index = e;
+  }
+}
+
+VectorClient::~VectorClient() = default;
+
+const olympics::match_created_t& VectorClient::match(int env) const {
+  static const olympics::match_created_t none{};
+  const auto& s = envs_.at(env)->session;
+  return s ? s->match() : none;
+}
+
+void VectorClient::start_next_match(Env& env) {
+  ++env.episode;
+  MatchRequest r = settings_.request;
+  r.seed = settings_.request.seed + static_cast<std::int64_t>(env.episode) * settings_.num_envs +
+           env.index;
+  const std::string id = settings_.request_prefix + "-" + std::to_string(env.index) + "-" +
+                         std::to_string(env.episode);
+  env.request = Connection::request_message(r, id);
+  env.phase = Env::Phase::kRequesting;
+  env.session.reset();
+  env.ready.reset();
+  env.last.reset();
+  env.tick = -1;
+  connection_.send_request(env.request);
+  env.next_send = Connection::Clock::now() + seconds(kResendS);
+  env.last_progress = Connection::Clock::now();
+}
+
+// Moves one environment along: request answered → join; join accepted → play; observation in.
+void VectorClient::advance(Env& env) {
+  const auto now = Connection::Clock::now();
+  const auto where = [&] {
+    return "environment " + std::to_string(env.index) + " (request " + env.request.request_id +
+           "): ";
+  };
+  if (env.phase == Env::Phase::kRequesting) {
+    if (auto created = connection_.take_created(env.request.request_id)) {
+      env.match_id = created->match_id;
+      if (slots_.empty())
+        for (int s = 0; s < created->num_slots; ++s) slots_.push_back(s);
+      env.phase = Env::Phase::kJoining;
+      connection_.send_join(env.match_id, slots_);
+      env.next_send = now + seconds(kResendS);
+      env.last_progress = now;
+    } else if (auto e = connection_.take_request_error(env.request.request_id)) {
+      // A full server has room again when a match ends: ask again later. Anything else is
+      // a request that can never succeed.
+      if (e->code != "FULL") throw MatchError(e->code, where() + e->message);
+    } else if (now >= env.next_send) {
+      connection_.send_request(env.request);
+      env.next_send = now + seconds(kResendS);
+    }
+  }
+  if (env.phase == Env::Phase::kJoining) {
+    if (auto reply = connection_.take_join_reply(env.match_id)) {
+      if (!reply->accepted) throw MatchError("REFUSED", where() + reply->reason);
+      if (obs_size_ == 0)
+        obs_size_ = reply->match.obs_size, action_size_ = reply->match.action_size;
+      if (reply->match.obs_size != obs_size_ || reply->match.action_size != action_size_)
+        throw MatchError("BAD_REQUEST", where() +
+                                            "its match has other vector sizes than the "
+                                            "first one's");
+      env.session = std::make_unique<MatchSession>(connection_, reply->match, slots_);
+      env.phase = Env::Phase::kPlaying;
+      env.last_progress = now;
+    } else if (auto e = connection_.fatal_error(env.match_id, /*joining=*/true)) {
+      throw MatchError(e->code, where() + e->message);
+    } else if (now >= env.next_send) {
+      connection_.send_join(env.match_id, slots_);
+      env.next_send = now + seconds(kResendS);
+    }
+  }
+  if (env.phase == Env::Phase::kPlaying && !env.ready) {
+    env.session->maintain();
+    auto o = env.session->take_observation();
+    if (!o && env.session->result() && env.last) {
+      // Over without a final observation for us (a forfeit while our action was awaited):
+      // the last one we saw, every slot done, nothing earned.
+      o = env.last;
+      o->tick += 1;
+      std::fill(o->reward.begin(), o->reward.end(), 0.0f);
+      for (auto& row : o->terms) std::fill(row.begin(), row.end(), 0.0f);
+      std::fill(o->done.begin(), o->done.end(), true);
+    }
+    if (o) {
+      env.last_progress = now;
+      if (term_names_.empty()) term_names_ = o->term_names;
+      if (o->all_done()) {  // this client's part of the match is over: on to the next one
+        env.final = std::move(o);
+        ending_.push_back({std::move(env.session), now});
+        start_next_match(env);
+      } else {
+        env.ready = std::move(o);
+      }
+    }
+  }
+  if (now - env.last_progress > seconds(settings_.timeout_s))
+    throw MatchError("TIMEOUT", where() + "nothing from its match for " +
+                                    std::to_string(settings_.timeout_s) + " s");
+}
+
+void VectorClient::collect_results() {
+  const auto now = Connection::Clock::now();
+  std::erase_if(ending_, [&](Ending& ending) {
+    if (const auto* r = ending.session->result()) {
+      results_.push_back(*r);
+      return true;
+    }
+    try {
+      ending.session->maintain();  // resends the last action: a finished server answers it
+    } catch (const MatchError&) {  // with the result
+      return true;                 // lost: the results store has it, if anything
+    }
+    return now - ending.since > seconds(kResultWaitS);
+  });
+}
+
+void VectorClient::append(VectorBatch& b, Env& env) {
+  const Observation& now = *env.ready;
+  // The reward and flags of an ended match are its last tick's; the observation is the next
+  // match's first.
+  const Observation& scored = env.final ? *env.final : now;
+  const size_t agents = slots_.size(), terms = term_names_.size();
+  b.envs.push_back(env.index);
+  b.tick.push_back(now.tick);
+  b.episode_over.push_back(env.final ? 1 : 0);
+  for (size_t a = 0; a < agents; ++a) {
+    b.obs.insert(b.obs.end(), now.obs[a].begin(), now.obs[a].end());
+    if (env.final)
+      b.final_obs.insert(b.final_obs.end(), env.final->obs[a].begin(), env.final->obs[a].end());
+    else
+      b.final_obs.insert(b.final_obs.end(), obs_size_, 0.0f);
+    b.reward.push_back(scored.reward[a]);
+    for (size_t t = 0; t < terms; ++t)
+      b.terms.push_back(t < scored.terms[a].size() ? scored.terms[a][t] : 0.0f);
+    b.truncated.push_back(scored.truncated[a] ? 1 : 0);
+    b.terminated.push_back(scored.done[a] && !scored.truncated[a] ? 1 : 0);
+  }
+  env.tick = now.tick;
+  env.last = std::move(env.ready);
+  env.ready.reset();
+  env.final.reset();
+  env.waiting = false;
+}
+
+VectorBatch VectorClient::reset() {
+  for (auto& env : envs_) {
+    start_next_match(*env);
+    env->final.reset();
+    env->waiting = true;
+  }
+  return recv(num_envs());
+}
+
+VectorBatch VectorClient::step(std::span<const float> actions) {
+  std::vector<int> all(envs_.size());
+  for (size_t e = 0; e < all.size(); ++e) all[e] = static_cast<int>(e);
+  send(all, actions);
+  return recv(num_envs());
+}
+
+void VectorClient::send(std::span<const int> envs, std::span<const float> actions) {
+  const size_t agents = slots_.size(), row = static_cast<size_t>(action_size_);
+  if (actions.size() != envs.size() * agents * row)
+    throw MatchError("BAD_ACTION", "send() got " + std::to_string(actions.size()) + " floats for " +
+                                       std::to_string(envs.size()) + " environments x " +
+                                       std::to_string(agents) + " agents x " + std::to_string(row) +
+                                       " actions");
+  for (size_t i = 0; i < envs.size(); ++i) {
+    Env& env = *envs_.at(envs[i]);
+    if (env.waiting || env.phase != Env::Phase::kPlaying)
+      throw MatchError("NOT_READY", "environment " + std::to_string(envs[i]) +
+                                        " has not returned its observation since its last send");
+    std::vector<std::vector<float>> rows(agents);
+    for (size_t a = 0; a < agents; ++a) {
+      const float* at = actions.data() + (i * agents + a) * row;
+      rows[a].assign(at, at + row);
+    }
+    env.session->act(env.tick, rows);
+    env.waiting = true;
+    env.last_progress = Connection::Clock::now();
+  }
+}
+
+VectorBatch VectorClient::recv(int min_ready, double timeout_s) {
+  int waiting = 0;
+  for (const auto& env : envs_) waiting += env->waiting ? 1 : 0;
+  min_ready = std::clamp(min_ready, 0, waiting);
+  auto next_maintenance = Connection::Clock::now();
+  const auto give_up =
+      timeout_s < 0 ? Connection::Clock::time_point::max() : next_maintenance + seconds(timeout_s);
+  for (;;) {
+    connection_.drain();
+    int ready = 0;
+    for (auto& env : envs_)
+      if (env->waiting) {
+        advance(*env);
+        ready += env->ready ? 1 : 0;
+      }
+    if (ready >= min_ready || Connection::Clock::now() >= give_up) {
+      VectorBatch batch;
+      for (auto& env : envs_)
+        if (env->waiting && env->ready) append(batch, *env);
+      return batch;
+    }
+    const auto now = Connection::Clock::now();
+    if (now >= next_maintenance) {
+      for (auto& env : envs_)
+        if (!env->waiting && env->session) env->session->maintain();
+      collect_results();
+      next_maintenance = now + seconds(kMaintainEveryS);
+    }
+    connection_.pump(now + std::chrono::milliseconds(10));
+  }
+}
+
+std::vector<olympics::match_result_t> VectorClient::take_results() {
+  connection_.drain();
+  collect_results();
+  std::vector<olympics::match_result_t> out;
+  out.swap(results_);
+  return out;
+}
+
+}  // namespace olympics::client

@@ -1,0 +1,14 @@
+// What the binding files of module smpl_olympics._client share.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include "olympics/match_result_t.hpp"
+
+namespace olympics::python {
+
+pybind11::dict result_dict(const olympics::match_result_t& r);
+// smpl_olympics._client.VectorClient (vector_bindings.cpp).
+void bind_vector_client(pybind11::module_& m);
+
+}  // namespace olympics::python

@@ -1,0 +1,107 @@
+"""Many matches at once from one process: OlympicsVectorEnv, over the C++ VectorClient.
+
+Every array is batched: observations [num_envs, num_agents, obs_size] as one float32 array,
+rewards, terminations and truncations [num_envs, num_agents], reward terms
+[num_envs, num_agents, n_terms]. An environment whose match ends is reset at once to its next
+match (next seed, same request): step() then returns the new match's first observation,
+infos["episode_over"][e] is True and infos["final_observation"][e] holds the ended match's last
+observation (the reward and flags are the ended match's last). Async mode, as EnvPool's:
+send(actions, env_ids) and recv() whichever environments are ready.
+
+Seeds: environment e's k-th match has seed seed + k * num_envs + e. Request ids:
+"<request_prefix>-<e>-<k>"; when this env does not own every slot, an opponent process that
+requests the same id meets it (olympics-agent --request-id <prefix>-<e> --episodes N).
+"""
+import json
+
+import numpy as np
+
+from . import catalog
+from ._client import VectorClient
+from .spaces import box
+
+
+class OlympicsVectorEnv:
+    def __init__(self, num_envs, sport="sandbox", mode="1v1", slots=None, seed=None,
+                 time_limit_s=0.0, sport_options=None, realtime=False, server_id="",
+                 request_prefix="", lcm_url="", agent_name="python", policy_id="",
+                 policy_version="", secret_file="", timeout_s=60.0, drop_rate=0.0):
+        self.num_envs, self.sport, self.mode = int(num_envs), sport, mode
+        spec = catalog.mode(sport, mode)
+        self.slots = sorted(slots) if slots is not None else list(range(len(spec["slot_teams"])))
+        self.agents = [f"slot_{s}" for s in self.slots]
+        self.num_agents = len(self.agents)
+        self.obs_size, self.action_size = spec["obs_size"], spec["action_size"]
+        self.term_names = [t["name"] for t in spec["rewards"]]
+        self.single_observation_space = catalog.observation_space(spec)
+        self.single_action_space = catalog.action_space(spec)
+        self.observation_space = box(
+            np.broadcast_to(self.single_observation_space.low, (self.num_envs, self.num_agents, self.obs_size)),
+            np.broadcast_to(self.single_observation_space.high, (self.num_envs, self.num_agents, self.obs_size)))
+        self.action_space = box(-np.ones((self.num_envs, self.num_agents, self.action_size), np.float32),
+                                np.ones((self.num_envs, self.num_agents, self.action_size), np.float32))
+        self._settings = dict(
+            num_envs=self.num_envs, sport=sport, mode=mode, time_limit_s=time_limit_s,
+            realtime=realtime, options=json.dumps(sport_options) if sport_options else "",
+            server_id=server_id, slots=self.slots, request_prefix=request_prefix,
+            timeout_s=timeout_s, lcm_url=lcm_url, agent_name=agent_name, policy_id=policy_id,
+            policy_version=policy_version, secret_file=secret_file,
+            drop_rate=drop_rate)  # TEST ONLY: share of sent datagrams dropped
+        self.seed = _fresh_seed() if seed is None else int(seed)
+        self._client = None
+
+    def reset(self, seed=None, options=None):
+        """Starts num_envs new matches; returns (observations [envs, agents, obs], infos).
+        A seed sets the base seed; without one, the base seed of the constructor (or a fresh
+        one if none was given) is used for the first reset and fresh ones afterwards."""
+        if seed is not None:
+            self.seed = int(seed)
+        elif self._client is not None:
+            self.seed = _fresh_seed()
+        self._client = VectorClient(seed=self.seed, **self._settings)
+        batch = self._client.reset()
+        return batch["obs"], {"match_ids": [self._client.match_id(e) for e in range(self.num_envs)]}
+
+    def step(self, actions):
+        """actions [num_envs, num_agents, action_size] -> observations, rewards, terminations,
+        truncations, infos (reward_terms, episode_over, final_observation, tick)."""
+        batch = self._client.step(self._actions(actions, self.num_envs))
+        return self._unpack(batch)[1:]
+
+    def send(self, actions, env_ids=None):
+        """Async: actions [len(env_ids), num_agents, action_size] for these environments
+        (default: all)."""
+        env_ids = list(range(self.num_envs)) if env_ids is None else [int(e) for e in env_ids]
+        self._client.send(env_ids, self._actions(actions, len(env_ids)))
+
+    def recv(self, min_ready=1, timeout_s=None):
+        """Async: the environments whose next observation has come (at least min_ready, or
+        whatever came within timeout_s when given): (env_ids, observations, rewards,
+        terminations, truncations, infos), rows in env_ids order."""
+        return self._unpack(self._client.recv(int(min_ready), timeout_s))
+
+    def results(self):
+        """Results of the matches that ended since the last call (dicts, as env.result)."""
+        return self._client.take_results() if self._client is not None else []
+
+    def close(self):
+        self._client = None
+
+    def _actions(self, actions, n):
+        actions = np.ascontiguousarray(actions, dtype=np.float32)
+        expected = (n, self.num_agents, self.action_size)
+        if actions.shape != expected:
+            raise ValueError(f"actions must have shape {expected}, got {actions.shape}")
+        return actions
+
+    def _unpack(self, b):
+        truncations = b["truncated"]
+        terminations = b["terminated"]
+        infos = {"reward_terms": b["terms"], "term_names": self.term_names,
+                 "episode_over": b["episode_over"], "final_observation": b["final_obs"],
+                 "tick": b["tick"]}
+        return b["envs"], b["obs"], b["reward"], terminations, truncations, infos
+
+
+def _fresh_seed():
+    return int(np.random.SeedSequence().entropy % (1 << 40))
