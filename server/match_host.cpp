@@ -274,7 +274,10 @@ void MatchHost::on_request(const std::uint8_t* data, int size) {
   created.request_id = req->request_id;
   {
     std::lock_guard lock(routes_mutex_);
-    if (!req->request_id.empty()) requests_[req->request_id] = created;
+    if (!req->request_id.empty()) {
+      requests_[req->request_id] = created;
+      request_of_match_[id.match_id] = req->request_id;
+    }
   }
   Worker& w = *workers_[worker];
   {
@@ -310,7 +313,14 @@ void MatchHost::route(const std::string& match_id, const std::string& channel,
     if (auto it = routes_.find(match_id); it != routes_.end())
       worker = it->second;
     else if (auto f = finished_.find(match_id); f != finished_.end()) {
-      transport_.publish(protocol::kResult, f->second);  // whoever still asks missed it
+      // Whoever still asks missed the end: its last observation batch again, then the result.
+      std::string from = client_id;
+      if (from.empty())
+        if (auto batch = protocol::decode<olympics::action_batch_t>(data, size))
+          from = batch->client_id;
+      if (auto b = f->second.final_batches.find(from); b != f->second.final_batches.end())
+        transport_.publish(f->second.obs_channel, b->second);
+      transport_.publish(protocol::kResult, f->second.result);
       return;
     }
   }
@@ -401,11 +411,19 @@ void MatchHost::on_finished(MatchRuntime& match) {
   std::fflush(stdout);
   std::lock_guard lock(routes_mutex_);
   routes_.erase(match.match_id());
-  finished_[match.match_id()] = r;
+  finished_[match.match_id()] = {r, match.description().obs_channel, match.final_batches()};
   finished_order_.push_back(match.match_id());
   if (finished_order_.size() > kRememberedResults) {
     finished_.erase(finished_order_.front());
     finished_order_.pop_front();
+  }
+  if (auto it = request_of_match_.find(match.match_id()); it != request_of_match_.end()) {
+    finished_requests_.push_back(it->second);
+    request_of_match_.erase(it);
+    if (finished_requests_.size() > kRememberedResults) {
+      requests_.erase(finished_requests_.front());
+      finished_requests_.pop_front();
+    }
   }
   ++finished_count_;
 }

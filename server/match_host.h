@@ -83,9 +83,18 @@ class MatchHost {
   std::atomic<bool> stopping_{false};
 
   mutable std::mutex routes_mutex_;
-  std::unordered_map<std::string, int> routes_;                // match id -> worker
-  std::map<std::string, olympics::match_created_t> requests_;  // request id -> created
-  std::map<std::string, olympics::match_result_t> finished_;   // recent results, to repeat
+  std::unordered_map<std::string, int> routes_;  // match id -> worker
+  // request id -> created: a resent request gets its match again. Kept while the match plays
+  // and for the last kRememberedResults finished ones (then forgotten: no growth without bound).
+  std::map<std::string, olympics::match_created_t> requests_;
+  std::unordered_map<std::string, std::string> request_of_match_;  // match id -> request id
+  std::deque<std::string> finished_requests_;
+  struct Finished {
+    olympics::match_result_t result;
+    std::string obs_channel;
+    std::map<std::string, olympics::observation_batch_t> final_batches;  // by client id
+  };
+  std::map<std::string, Finished> finished_;  // recent matches' ends, to repeat
   std::deque<std::string> finished_order_;
   std::map<std::string, std::pair<std::chrono::steady_clock::time_point, int>>
       peers_;  // id -> seen, free

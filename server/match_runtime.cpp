@@ -241,7 +241,11 @@ void MatchRuntime::on_heartbeat(const olympics::heartbeat_t& beat, Clock::time_p
 }
 
 void MatchRuntime::on_actions(const olympics::action_batch_t& batch, Clock::time_point now) {
-  if (phase_ == Phase::Finished) return publish_result();  // it missed the result: say it again
+  if (phase_ == Phase::Finished) {  // it missed the end: say it again
+    if (auto it = final_batches_.find(batch.client_id); it != final_batches_.end())
+      send(description_.obs_channel, it->second);
+    return publish_result();
+  }
   int c = client_index(batch.client_id);
   if (c < 0)
     return error(batch.client_id, "UNKNOWN_CLIENT",
@@ -380,6 +384,7 @@ void MatchRuntime::publish_observations(const std::vector<int>& clients) {
     }
     b.info = info_text;
     send(description_.obs_channel, b);
+    if (out.match_over) final_batches_[k.id] = std::move(b);
   }
 }
 

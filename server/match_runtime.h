@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -21,6 +22,7 @@
 #include "olympics/join_t.hpp"
 #include "olympics/match_created_t.hpp"
 #include "olympics/match_result_t.hpp"
+#include "olympics/observation_batch_t.hpp"
 #include "replay.h"
 #include "results_store.h"
 #include "sport.h"
@@ -64,6 +66,11 @@ class MatchRuntime {
 
   bool finished() const { return finished_; }
   void publish_result();
+  // The last observation batch each client was sent (by client id): a client that lost it gets
+  // it again, with the result, for any message it sends about the finished match.
+  const std::map<std::string, olympics::observation_batch_t>& final_batches() const {
+    return final_batches_;
+  }
   const olympics::match_result_t& result() const { return result_; }
   StoredMatch stored_result() const;
   // Who plays which slot (agents, policies), once every slot is claimed.
@@ -120,6 +127,7 @@ class MatchRuntime {
   std::optional<nlohmann::json> forfeit_;
   std::vector<float> replay_actions_;
   olympics::match_result_t result_;
+  std::map<std::string, olympics::observation_batch_t> final_batches_;
   std::int64_t finished_at_unix_ = 0;
 };
 

@@ -94,7 +94,7 @@ std::optional<Observation> MatchClient::next(double timeout_s) {
   MatchSession& s = session("asking for observations");
   const auto deadline = Connection::Clock::now() + seconds(timeout_s);
   while (!s.has_observation()) {
-    if (s.result()) return std::nullopt;
+    if (s.ended_without_final_observation()) return std::nullopt;
     if (Connection::Clock::now() >= deadline)
       throw MatchError("TIMEOUT", "no observation from match " + s.match().match_id + " for " +
                                       std::to_string(timeout_s) + " s: the server may be gone");

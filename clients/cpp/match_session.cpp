@@ -21,13 +21,17 @@ MatchSession::MatchSession(Connection& connection, olympics::match_created_t mat
   connection_.watch(match_.match_id);
   obs_subscription_ = connection_.transport().subscribe_to<olympics::observation_batch_t>(
       match_.obs_channel, [this](const std::string&, const olympics::observation_batch_t& b) {
-        if (b.client_id != connection_.client_id() || b.match_id != match_.match_id ||
-            b.tick <= last_taken_tick_)
-          return;  // ours, and new
+        if (b.client_id != connection_.client_id() || b.match_id != match_.match_id) return;
+        // New: a later tick, or the same tick ending the match (a forfeit ends it between
+        // ticks, so its final batch repeats the tick of the one before).
+        const bool ends = std::all_of(b.done.begin(), b.done.end(), [](auto d) { return d; });
+        if (b.tick < last_taken_tick_ ||
+            (b.tick == last_taken_tick_ && (last_taken_done_ || !ends)))
+          return;
         // The shape the match described: another one would send a policy out of bounds.
         if (b.slots != slots_ || b.obs_size != match_.obs_size)
           return connection_.transport().count_malformed();
-        if (latest_ && latest_->tick >= b.tick) return;
+        if (latest_ && (latest_->tick > b.tick || (latest_->tick == b.tick && !ends))) return;
         Observation o;
         o.tick = b.tick;
         o.slots = b.slots;
@@ -53,6 +57,7 @@ std::optional<Observation> MatchSession::take_observation() {
   Observation o = std::move(*latest_);
   latest_.reset();
   last_taken_tick_ = o.tick;
+  last_taken_done_ = o.all_done();
   return o;
 }
 
@@ -103,6 +108,13 @@ void MatchSession::maintain() {
 
 const olympics::match_result_t* MatchSession::result() const {
   return connection_.result(match_.match_id);
+}
+
+bool MatchSession::ended_without_final_observation() {
+  constexpr double kGraceS = 0.5;
+  if (latest_ || last_taken_done_ || !result()) return false;
+  if (!result_seen_at_) result_seen_at_ = Clock::now();
+  return Clock::now() - *result_seen_at_ > seconds(kGraceS);
 }
 
 void MatchSession::fail_if_lost() {

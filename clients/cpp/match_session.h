@@ -44,6 +44,9 @@ class MatchSession {
   void maintain();
   // The result, once the server has sent it.
   const olympics::match_result_t* result() const;
+  // The result is in and the final observation has not come within a grace period in which
+  // the last action is resent (the server answers with the final batch again): it is lost.
+  bool ended_without_final_observation();
 
  private:
   using Clock = Connection::Clock;
@@ -55,6 +58,8 @@ class MatchSession {
   int obs_subscription_ = -1;
   std::optional<Observation> latest_;
   int last_taken_tick_ = -1;
+  bool last_taken_done_ = false;  // the last observation taken had every slot done
+  std::optional<Clock::time_point> result_seen_at_;
   std::vector<std::uint8_t> last_action_bytes_;
   std::int64_t seq_ = 0;
   Clock::time_point joined_at_, last_heartbeat_, last_send_;

@@ -109,9 +109,9 @@ void VectorClient::advance(Env& env) {
   if (env.phase == Env::Phase::kPlaying && !env.ready) {
     env.session->maintain();
     auto o = env.session->take_observation();
-    if (!o && env.session->result() && env.last) {
-      // Over without a final observation for us (a forfeit while our action was awaited):
-      // the last one we saw, every slot done, nothing earned.
+    if (!o && env.last && env.session->ended_without_final_observation()) {
+      // Over, and its final observation lost for good: the last one we saw, every slot done,
+      // nothing earned.
       o = env.last;
       o->tick += 1;
       std::fill(o->reward.begin(), o->reward.end(), 0.0f);
