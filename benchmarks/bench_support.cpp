@@ -80,4 +80,30 @@ nlohmann::json speed_1v1(const std::string& sport, const core::ModelSpec& player
           {"ticks_per_match", ticks}};
 }
 
+// Sandbox 1v1 matches, zero actions, played back to back; ticks per wall second.
+double sandbox_ticks_per_second(int matches, double seconds) {
+  const sports::Sport& sandbox = sports::sport_or_throw("sandbox");
+  std::vector<std::unique_ptr<sports::SportMatch>> games;
+  for (int m = 0; m < matches; ++m)
+    games.push_back(sandbox.create({"1v1", static_cast<std::uint64_t>(m), 20}));
+  std::vector<float> zero(69, 0.0f);
+  std::vector<std::span<const float>> actions(2, zero);
+  long ticks = 0;
+  auto start = Clock::now();
+  double elapsed = 0;
+  std::uint64_t next_seed = matches;
+  while (elapsed < seconds) {
+    for (auto& g : games) {
+      // Observations are part of a tick's cost on the server too.
+      std::vector<float> obs(g->obs_size());
+      for (int s = 0; s < 2; ++s) g->observe(s, obs);
+      g->step(actions);
+      ++ticks;
+      if (g->outcome().match_over) g = sandbox.create({"1v1", next_seed++, 20});
+    }
+    elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+  }
+  return ticks / elapsed;
+}
+
 }  // namespace olympics::bench

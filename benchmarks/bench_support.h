@@ -19,6 +19,10 @@ client::MatchInfo in_process_match_info(const std::string& sport, const std::str
 
 double median(std::vector<double> v);
 
+// Sandbox 1v1 matches (`matches` of them, round robin), zero actions, observed and stepped back
+// to back on the calling thread; ticks per wall second.
+double sandbox_ticks_per_second(int matches, double seconds);
+
 // Ticks per second of a sport's 1v1 with zero actions, one core: matches of `ticks` each (or
 // until one ends), only the stepping timed.
 double match_ticks_per_s(const std::string& sport, double seconds, int ticks);

@@ -5,6 +5,7 @@
 //   olympics-bench racket  [--json] [--episodes N] [--seconds S] [--repeats R]
 //   olympics-bench combat  [--json] [--bouts N] [--seconds S] [--repeats R]
 //   olympics-bench soak    [--json] [--minutes M] [--matches N] [--workers W] (an hour; not CI)
+//   olympics-bench vector  [--json] [--envs N] [--workers W] [--seconds S] [--connect URL]
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
@@ -13,6 +14,7 @@
 #include "racket_bench.h"
 #include "server_bench.h"
 #include "soak_bench.h"
+#include "vector_bench.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Performance figures for the humanoid sports server"};
@@ -88,6 +90,18 @@ int main(int argc, char** argv) {
   soa->add_flag("--no-league", no_league, "clients only");
   soa->add_flag("--unsigned", unsigned_messages, "no deployment secret");
   soa->add_flag("--keep", soak.keep, "keep the folder of results, replays and logs");
+  olympics::bench::VectorBenchOptions vector;
+  auto* vect = app.add_subcommand(
+      "vector", "one vector client's agent-steps/s over LCM vs bare physics on every core");
+  vect->add_flag("--json", json, "print one JSON object instead of a table");
+  vect->add_option("--envs", vector.envs, "matches the client plays at once")
+      ->check(CLI::PositiveNumber);
+  vect->add_option("--workers", vector.workers, "server worker threads (default: one per core)")
+      ->check(CLI::NonNegativeNumber);
+  vect->add_option("--seconds", vector.seconds, "wall seconds per measurement")
+      ->check(CLI::PositiveNumber);
+  vect->add_option("--connect", vector.connect,
+                   "LCM URL of a running olympics-server to play on (default: one in process)");
   CLI11_PARSE(app, argc, argv);
 
   if (*phys) {
@@ -119,6 +133,13 @@ int main(int argc, char** argv) {
       std::printf("%s\n", report.dump(2).c_str());
     else
       olympics::bench::print_combat_report(report);
+  }
+  if (*vect) {
+    auto report = olympics::bench::run_vector_bench(vector);
+    if (json)
+      std::printf("%s\n", report.dump(2).c_str());
+    else
+      olympics::bench::print_vector_report(report);
   }
   if (*soa) {
     soak.league = !no_league, soak.signed_messages = !unsigned_messages;

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "auth.h"
+#include "bench_support.h"
 #include "match_client.h"
 #include "match_host.h"
 #include "registry.h"
@@ -20,32 +21,6 @@ namespace olympics::bench {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// Sandbox 1v1 matches, zero actions, played back to back; ticks per wall second.
-double bare_ticks_per_second(int matches, double seconds) {
-  const sports::Sport& sandbox = sports::sport_or_throw("sandbox");
-  std::vector<std::unique_ptr<sports::SportMatch>> games;
-  for (int m = 0; m < matches; ++m)
-    games.push_back(sandbox.create({"1v1", static_cast<std::uint64_t>(m), 20}));
-  std::vector<float> zero(69, 0.0f);
-  std::vector<std::span<const float>> actions(2, zero);
-  long ticks = 0;
-  auto start = Clock::now();
-  double elapsed = 0;
-  std::uint64_t next_seed = matches;
-  while (elapsed < seconds) {
-    for (auto& g : games) {
-      // Observations are part of a tick's cost on the server too.
-      std::vector<float> obs(g->obs_size());
-      for (int s = 0; s < 2; ++s) g->observe(s, obs);
-      g->step(actions);
-      ++ticks;
-      if (g->outcome().match_over) g = sandbox.create({"1v1", next_seed++, 20});
-    }
-    elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-  }
-  return ticks / elapsed;
-}
 
 // Restricts the calling thread (and threads it starts later) to CPUs [first, last].
 void pin_this_thread(int first, int last) {
@@ -144,7 +119,7 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
     paused = true;
     std::this_thread::sleep_for(std::chrono::milliseconds(50));  // in-flight ticks drain
     if (pin) pin_this_thread(0, 0);  // the bare figure: on a worker's core
-    bare_rates.push_back(bare_ticks_per_second(o.matches, window));
+    bare_rates.push_back(sandbox_ticks_per_second(o.matches, window));
     if (pin) pin_this_thread(o.workers, cores - 1);
     paused = false;
     ratios.push_back(served_rates.back() / bare_rates.back());
