@@ -41,6 +41,9 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   bool no_pin = false;
   serv->add_flag("--no-pin", no_pin, "let the OS place the server's workers");
+  serv->add_option("--lcm-provider", server.provider,
+                   "udpm (one port for all) or mpudpm (channels hashed over 64 ports)")
+      ->check(CLI::IsMember({"udpm", "mpudpm"}));
   serv->add_flag("--signed", server.signed_messages,
                  "with a deployment secret: every message signed and checked");
   olympics::bench::RacketBenchOptions racket;

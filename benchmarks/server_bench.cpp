@@ -39,8 +39,11 @@ double percentile(std::vector<double> v, double p) {
 }  // namespace
 
 nlohmann::json run_server_bench(const ServerBenchOptions& o) {
-  const std::string url = "udpm://239.255.76.67:" + std::to_string(17000 + getpid() % 10000) +
-                          "?ttl=0&recv_buf_size=4194304";
+  // mpudpm spreads channels over 64 ports (a socket hears only the ports of its channels).
+  const bool multi_port = o.provider == "mpudpm";
+  const std::string url = o.provider +
+                          "://239.255.76.67:" + std::to_string(17000 + getpid() % 1000 * 10) +
+                          "?ttl=0&recv_buf_size=4194304" + (multi_port ? "&nports=64" : "");
   char db[] = "/tmp/olympics-bench-XXXXXX";
   int fd = mkstemp(db);
   close(fd);
@@ -136,6 +139,7 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
   std::vector<double> all;
   for (auto& r : round_trips) all.insert(all.end(), r.begin(), r.end());
   return {{"scene", "sandbox 1v1 (2 SMPL humanoids), zero actions, sync mode"},
+          {"lcm_provider", o.provider},
           {"signed_messages", o.signed_messages},
           {"matches", o.matches},
           {"server_workers", o.workers},

@@ -2,15 +2,17 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <string>
 
 namespace olympics::bench {
 
 struct ServerBenchOptions {
-  double seconds = 3.0;          // wall time per measurement
-  int matches = 8;               // concurrent matches, one client each (both slots)
-  int workers = 1;               // server threads: 1 = "per core"
-  bool pin = true;               // workers alone on their cores, everything else on the others
-  bool signed_messages = false;  // a deployment secret: every message signed and checked
+  double seconds = 3.0;           // wall time per measurement
+  int matches = 8;                // concurrent matches, one client each (both slots)
+  int workers = 1;                // server threads: 1 = "per core"
+  bool pin = true;                // workers alone on their cores, everything else on the others
+  bool signed_messages = false;   // a deployment secret: every message signed and checked
+  std::string provider = "udpm";  // LCM provider: udpm (one port) or mpudpm (channels on ports)
 };
 
 nlohmann::json run_server_bench(const ServerBenchOptions& options);
