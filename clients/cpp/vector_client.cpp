@@ -10,12 +10,13 @@ constexpr double kMaintainEveryS = 0.05;  // heartbeats of environments not wait
 }  // namespace
 
 struct VectorClient::Env {
-  enum class Phase { kRequesting, kJoining, kPlaying };
+  enum class Phase { kAwaitingAssignment, kRequesting, kJoining, kPlaying };
   int index = 0;
   int episode = -1;
   Phase phase = Phase::kRequesting;
   olympics::match_request_t request;
   std::string match_id;
+  std::vector<int> slots;  // joined in its match
   Connection::Clock::time_point next_send, last_progress;
   std::unique_ptr<MatchSession> session;
   bool waiting = false;              // its next observation is owed to the caller
@@ -52,11 +53,16 @@ void VectorClient::start_next_match(Env& env) {
   const std::string id = settings_.request_prefix + "-" + std::to_string(env.index) + "-" +
                          std::to_string(env.episode);
   env.request = Connection::request_message(r, id);
-  env.phase = Env::Phase::kRequesting;
   env.session.reset();
   env.ready.reset();
   env.last.reset();
   env.tick = -1;
+  env.last_progress = Connection::Clock::now();
+  if (!settings_.learner.empty()) {
+    env.phase = Env::Phase::kAwaitingAssignment;
+    return;
+  }
+  env.phase = Env::Phase::kRequesting;
   connection_.send_request(env.request);
   env.next_send = Connection::Clock::now() + seconds(kResendS);
   env.last_progress = Connection::Clock::now();
@@ -69,13 +75,30 @@ void VectorClient::advance(Env& env) {
     return "environment " + std::to_string(env.index) + " (request " + env.request.request_id +
            "): ";
   };
+  if (env.phase == Env::Phase::kAwaitingAssignment) {
+    env.last_progress = now;  // waiting for the league is not the match's silence
+    if (auto a = connection_.take_assignment(settings_.learner)) {
+      if (!slots_.empty() && a->slots.size() != slots_.size())
+        throw MatchError("BAD_REQUEST", where() + "the league assigned " +
+                                            std::to_string(a->slots.size()) + " slots, not " +
+                                            std::to_string(slots_.size()));
+      if (slots_.empty()) slots_ = a->slots;
+      env.match_id = a->match_id;
+      env.slots = a->slots;
+      std::sort(env.slots.begin(), env.slots.end());
+      env.phase = Env::Phase::kJoining;
+      connection_.send_join(env.match_id, env.slots);
+      env.next_send = now + seconds(kResendS);
+    }
+  }
   if (env.phase == Env::Phase::kRequesting) {
     if (auto created = connection_.take_created(env.request.request_id)) {
       env.match_id = created->match_id;
       if (slots_.empty())
         for (int s = 0; s < created->num_slots; ++s) slots_.push_back(s);
+      env.slots = slots_;
       env.phase = Env::Phase::kJoining;
-      connection_.send_join(env.match_id, slots_);
+      connection_.send_join(env.match_id, env.slots);
       env.next_send = now + seconds(kResendS);
       env.last_progress = now;
     } else if (auto e = connection_.take_request_error(env.request.request_id)) {
@@ -96,13 +119,13 @@ void VectorClient::advance(Env& env) {
         throw MatchError("BAD_REQUEST", where() +
                                             "its match has other vector sizes than the "
                                             "first one's");
-      env.session = std::make_unique<MatchSession>(connection_, reply->match, slots_);
+      env.session = std::make_unique<MatchSession>(connection_, reply->match, env.slots);
       env.phase = Env::Phase::kPlaying;
       env.last_progress = now;
     } else if (auto e = connection_.fatal_error(env.match_id, /*joining=*/true)) {
       throw MatchError(e->code, where() + e->message);
     } else if (now >= env.next_send) {
-      connection_.send_join(env.match_id, slots_);
+      connection_.send_join(env.match_id, env.slots);
       env.next_send = now + seconds(kResendS);
     }
   }
@@ -179,12 +202,16 @@ void VectorClient::append(VectorBatch& b, Env& env) {
   env.waiting = false;
 }
 
-VectorBatch VectorClient::reset() {
+void VectorClient::start() {
   for (auto& env : envs_) {
     start_next_match(*env);
     env->final.reset();
     env->waiting = true;
   }
+}
+
+VectorBatch VectorClient::reset() {
+  start();
   return recv(num_envs());
 }
 

@@ -11,7 +11,8 @@
 // Seeds: environment e's k-th match has seed base_seed + k * num_envs + e, so a run with one
 // environment per process plays the same matches as one vector client (tested).
 // Request ids: "<request_prefix>-<e>-<k>"; an opponent process requesting the same id meets
-// this client's match (when this client does not own every slot).
+// this client's match (when this client does not own every slot). As a league's live learner
+// (VectorSettings::learner) it plays the matches the league assigns instead.
 #pragma once
 
 #include <deque>
@@ -32,6 +33,10 @@ struct VectorSettings {
   std::vector<int> slots;      // played in every match; empty = every slot of the mode
   std::string request_prefix;  // "" = the client id
   double timeout_s = 60;       // nothing heard from an environment's match for this long: error
+  // Play what a league assigns to its entrant live:<learner> instead of requesting matches:
+  // each environment takes the next assignment (its slots, as many as `slots` has) when its
+  // match ends, and waits (without the timeout) while none is there.
+  std::string learner;
 };
 
 // One tick of every environment that was ready, in the order of `envs`.
@@ -63,6 +68,8 @@ class VectorClient {
 
   // Starts every environment's first match and returns their first observations.
   VectorBatch reset();
+  // Async: starts every environment's first match; recv() returns them as they begin.
+  void start();
   // Every environment's actions [envs][agents][action_size]; their next observations.
   VectorBatch step(std::span<const float> actions);
   // Async: actions [envs.size()][agents][action_size] for these environments.

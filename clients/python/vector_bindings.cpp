@@ -58,7 +58,8 @@ void bind_vector_client(py::module_& m) {
                        const std::vector<int>& slots, const std::string& request_prefix,
                        double timeout_s, const std::string& lcm_url, const std::string& agent_name,
                        const std::string& policy_id, const std::string& policy_version,
-                       const std::string& secret_file, double drop_rate) {
+                       const std::string& secret_file, double drop_rate,
+                       const std::string& learner) {
              ClientOptions o;
              o.lcm_url = lcm_url;
              o.agent_name = agent_name;
@@ -72,6 +73,7 @@ void bind_vector_client(py::module_& m) {
              v.slots = slots;
              v.request_prefix = request_prefix;
              v.timeout_s = timeout_s;
+             v.learner = learner;
              return std::make_unique<VectorClient>(o, v);
            }),
            py::arg("num_envs"), py::arg("sport"), py::arg("mode"), py::arg("seed") = 0,
@@ -79,7 +81,8 @@ void bind_vector_client(py::module_& m) {
            py::arg("server_id") = "", py::arg("slots") = std::vector<int>{},
            py::arg("request_prefix") = "", py::arg("timeout_s") = 60.0, py::arg("lcm_url") = "",
            py::arg("agent_name") = "python", py::arg("policy_id") = "",
-           py::arg("policy_version") = "", py::arg("secret_file") = "", py::arg("drop_rate") = 0.0)
+           py::arg("policy_version") = "", py::arg("secret_file") = "", py::arg("drop_rate") = 0.0,
+           py::arg("learner") = "")
       .def_property_readonly("num_envs", &VectorClient::num_envs)
       .def_property_readonly("num_agents", &VectorClient::num_agents)
       .def_property_readonly("slots", &VectorClient::slots)
@@ -96,6 +99,11 @@ void bind_vector_client(py::module_& m) {
                b = c.reset();
              }
              return batch_dict(c, b);
+           })
+      .def("start",
+           [](VectorClient& c) {
+             py::gil_scoped_release release;
+             c.start();
            })
       .def(
           "step",

@@ -157,6 +157,40 @@ class VectorEnv(unittest.TestCase):
                 p.kill()
                 p.wait()
 
+    def test_a_vector_learner_plays_the_leagues_games_at_once(self):
+        self.serve(self.url, "vec")
+        league = subprocess.Popen(
+            [f"{BIN}/olympics-league", "run", "--db", os.path.join(self.dir, "league.db"),
+             "--name", "vec", "--entrants", "live:vec,zero,random:1,random:2", "--parallel", "3",
+             "--time-limit", "2", "--lcm-url", self.url, "--log-dir", self.dir, "--quiet"],
+            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        try:
+            env = OlympicsVectorEnv(3, sport="sandbox", mode="1v1", learner="vec",
+                                    lcm_url=self.url, agent_name="vec", timeout_s=600)
+            self.assertEqual(env.agents, ["agent_0"])
+            # Every environment starts when the league assigns it a game: async, with a timeout.
+            env.start()
+            results = {}
+            while league.poll() is None or len(results) < 3:
+                ids, obs, rewards, terminations, truncations, infos = env.recv(1, timeout_s=0.5)
+                live = [int(e) for i, e in enumerate(ids) if not infos["episode_over"][i]]
+                over = [int(e) for i, e in enumerate(ids) if infos["episode_over"][i]]
+                # An environment whose match ended already holds its next assignment's first
+                # observation (or none yet: it waits for the league).
+                if live or over:
+                    env.send(np.zeros((len(live) + len(over), 1, 69), np.float32), live + over)
+                for r in env.results():
+                    results[r["match_id"]] = r
+                self.assertLess(len(results), 4)
+            out, _ = league.communicate(timeout=60)
+            self.assertEqual(league.returncode, 0, out)
+            self.assertEqual(len(results), 3, "live:vec plays three games of a 4-entrant round robin")
+            for r in results.values():
+                self.assertIn("vec", r["agent_names"])
+        finally:
+            league.kill()
+            league.wait()
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -10,7 +10,9 @@ send(actions, env_ids) and recv() whichever environments are ready.
 
 Seeds: environment e's k-th match has seed seed + k * num_envs + e. Request ids:
 "<request_prefix>-<e>-<k>"; when this env does not own every slot, an opponent process that
-requests the same id meets it (olympics-agent --request-id <prefix>-<e> --episodes N).
+requests the same id meets it (olympics-agent --request-id <prefix>-<e>-<k>). With learner=NAME
+the env is a league's live learner instead: each environment plays the next match the league
+assigns to its entrant live:NAME (agents are then "agent_<i>", one per slot of a team).
 """
 import json
 
@@ -25,11 +27,15 @@ class OlympicsVectorEnv:
     def __init__(self, num_envs, sport="sandbox", mode="1v1", slots=None, seed=None,
                  time_limit_s=0.0, sport_options=None, realtime=False, server_id="",
                  request_prefix="", lcm_url="", agent_name="python", policy_id="",
-                 policy_version="", secret_file="", timeout_s=60.0, drop_rate=0.0):
+                 policy_version="", secret_file="", timeout_s=60.0, drop_rate=0.0, learner=""):
         self.num_envs, self.sport, self.mode = int(num_envs), sport, mode
         spec = catalog.mode(sport, mode)
-        self.slots = sorted(slots) if slots is not None else list(range(len(spec["slot_teams"])))
-        self.agents = [f"slot_{s}" for s in self.slots]
+        if learner:  # the league says which slots, match by match: one team's worth
+            self.slots = []
+            self.agents = [f"agent_{i}" for i in range(spec["slot_teams"].count(0))]
+        else:
+            self.slots = sorted(slots) if slots is not None else list(range(len(spec["slot_teams"])))
+            self.agents = [f"slot_{s}" for s in self.slots]
         self.num_agents = len(self.agents)
         self.obs_size, self.action_size = spec["obs_size"], spec["action_size"]
         self.term_names = [t["name"] for t in spec["rewards"]]
@@ -46,7 +52,8 @@ class OlympicsVectorEnv:
             server_id=server_id, slots=self.slots, request_prefix=request_prefix,
             timeout_s=timeout_s, lcm_url=lcm_url, agent_name=agent_name, policy_id=policy_id,
             policy_version=policy_version, secret_file=secret_file,
-            drop_rate=drop_rate)  # TEST ONLY: share of sent datagrams dropped
+            drop_rate=drop_rate,  # TEST ONLY: share of sent datagrams dropped
+            learner=learner)
         self.seed = _fresh_seed() if seed is None else int(seed)
         self._client = None
 
@@ -61,6 +68,13 @@ class OlympicsVectorEnv:
         self._client = VectorClient(seed=self.seed, **self._settings)
         batch = self._client.reset()
         return batch["obs"], {"match_ids": [self._client.match_id(e) for e in range(self.num_envs)]}
+
+    def start(self, seed=None):
+        """Async: starts every environment's first match without waiting; recv() returns each
+        as it begins (a league's live learner gets its matches one by one)."""
+        self.seed = int(seed) if seed is not None else self.seed
+        self._client = VectorClient(seed=self.seed, **self._settings)
+        self._client.start()
 
     def step(self, actions):
         """actions [num_envs, num_agents, action_size] -> observations, rewards, terminations,
