@@ -140,13 +140,25 @@ void MatchHost::run(const std::atomic<bool>& stop) {
                          if (!beat) return transport_.count_malformed();
                          route(beat->match_id, ch, d, n, beat->client_id);
                        });
-  transport_.subscribe(std::string(protocol::kActPrefix) + ".*",
-                       [this](const std::string& ch, const std::uint8_t* d, int n) {
-                         route(ch.substr(std::string(protocol::kActPrefix).size()), ch, d, n, "");
-                       });
+  exact_action_channels_ = transport_.url().rfind("mpudpm://", 0) == 0;
+  if (!exact_action_channels_)
+    transport_.subscribe(std::string(protocol::kActPrefix) + ".*",
+                         [this](const std::string& ch, const std::uint8_t* d, int n) {
+                           route(ch.substr(std::string(protocol::kActPrefix).size()), ch, d, n, "");
+                         });
   auto next_announce = std::chrono::steady_clock::now();
   while (!stop) {
     transport_.handle(20);
+    std::vector<std::string> ended;
+    {
+      std::lock_guard lock(routes_mutex_);
+      ended.swap(to_unsubscribe_);
+    }
+    for (const auto& id : ended)
+      if (auto it = action_subscriptions_.find(id); it != action_subscriptions_.end()) {
+        transport_.unsubscribe(it->second);
+        action_subscriptions_.erase(it);
+      }
     auto now = std::chrono::steady_clock::now();
     if (now >= next_announce) {
       announce();
@@ -285,7 +297,16 @@ void MatchHost::on_request(const std::uint8_t* data, int size) {
     w.entries[id.match_id].match = std::move(runtime);
   }
   w.wake.notify_one();
+  if (exact_action_channels_) subscribe_actions(id.match_id);
   transport_.publish(protocol::kCreated, created);
+}
+
+void MatchHost::subscribe_actions(const std::string& match_id) {
+  action_subscriptions_[match_id] =
+      transport_.subscribe(protocol::action_channel(match_id),
+                           [this, match_id](const std::string& ch, const std::uint8_t* d, int n) {
+                             route(match_id, ch, d, n, "");
+                           });
 }
 
 void MatchHost::note_in_progress(const MatchRuntime& runtime, const MatchIdentity& id) {
@@ -415,6 +436,7 @@ void MatchHost::on_finished(MatchRuntime& match) {
   finished_order_.push_back(match.match_id());
   if (finished_order_.size() > kRememberedResults) {
     finished_.erase(finished_order_.front());
+    if (exact_action_channels_) to_unsubscribe_.push_back(finished_order_.front());
     finished_order_.pop_front();
   }
   if (auto it = request_of_match_.find(match.match_id()); it != request_of_match_.end()) {

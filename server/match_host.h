@@ -99,6 +99,13 @@ class MatchHost {
   std::map<std::string, std::pair<std::chrono::steady_clock::time_point, int>>
       peers_;  // id -> seen, free
   std::atomic<long> finished_count_{0};
+  // With LCM's multi-port provider (mpudpm://) a pattern subscription listens on every port, so
+  // each match's action channel is subscribed by name while the match and its remembered end
+  // last; subscriptions are made and ended on the receiving thread (run()).
+  bool exact_action_channels_ = false;
+  std::unordered_map<std::string, int> action_subscriptions_;  // match id -> handle
+  std::vector<std::string> to_unsubscribe_;                    // under routes_mutex_
+  void subscribe_actions(const std::string& match_id);
   const std::int64_t boot_us_;  // when this process started: announced
   const std::string boot_tag_;  // the same in ms, base 36: in match ids
   long next_match_number_ = 1;

@@ -129,6 +129,25 @@ class EnvAgainstRealServer(unittest.TestCase):
             server.kill()
             server.wait()
 
+    def test_a_match_on_lcms_multi_port_provider(self):
+        # mpudpm://: every channel hashed to one of 64 ports; the server subscribes to each
+        # match's action channel by name (docs/server.md, Scale notes).
+        url = f"mpudpm://239.255.76.67:{41000 + os.getpid() % 9000 * 2}?ttl=0&nports=64"
+        server = start_server(url, os.path.join(self.dir, "multi.db"), "multi",
+                              os.path.join(self.dir, "multi.log"))
+        try:
+            env = OlympicsParallelEnv(sport="sandbox", mode="1v1", lcm_url=url, time_limit_s=1.0)
+            env.reset(seed=2)
+            while env.agents:
+                env.step({a: np.zeros(69, dtype=np.float32) for a in env.agents})
+            self.assertGreater(env.result["ticks"], 0)
+            stored = sqlite3.connect(os.path.join(self.dir, "multi.db")).execute(
+                "SELECT ticks FROM matches WHERE match_id = ?", (env.result["match_id"],)).fetchone()
+            self.assertEqual(stored, (env.result["ticks"],))
+        finally:
+            server.kill()
+            server.wait()
+
     def test_errors_reach_python(self):
         with self.assertRaises(ValueError) as caught:  # the catalog knows before any server
             OlympicsParallelEnv(sport="curling", lcm_url=self.url)
