@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <thread>
 
 #include "core/control_rate.h"
 #include "core/humanoid_scene.h"
@@ -104,6 +105,16 @@ double sandbox_ticks_per_second(int matches, double seconds) {
     elapsed = std::chrono::duration<double>(Clock::now() - start).count();
   }
   return ticks / elapsed;
+}
+
+double sum_over_threads(int threads, const std::function<double(int)>& rate) {
+  std::vector<double> rates(threads);
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t) pool.emplace_back([&, t] { rates[t] = rate(t); });
+  for (auto& th : pool) th.join();
+  double sum = 0;
+  for (double r : rates) sum += r;
+  return sum;
 }
 
 }  // namespace olympics::bench

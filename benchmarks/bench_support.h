@@ -2,6 +2,7 @@
 // speed of a sport's 1v1 against the bare physics of the same humanoids.
 #pragma once
 
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -18,6 +19,9 @@ client::MatchInfo in_process_match_info(const std::string& sport, const std::str
                                         const sports::SportMatch& match);
 
 double median(std::vector<double> v);
+
+// The sum of `rate(t)` run on `threads` threads at once (t = 0..threads-1): an aggregate rate.
+double sum_over_threads(int threads, const std::function<double(int)>& rate);
 
 // Sandbox 1v1 matches (`matches` of them, round robin), zero actions, observed and stepped back
 // to back on the calling thread; ticks per wall second.

@@ -132,14 +132,7 @@ double bytes_per_world(const core::ModelSpec& spec) {
 
 // Aggregate physics steps/s of `threads` 1v1 worlds, one per thread.
 double threaded(const core::ModelSpec& spec, int threads, double seconds) {
-  std::vector<double> rates(threads);
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t)
-    pool.emplace_back([&, t] { rates[t] = ours(spec, 2, seconds); });
-  for (auto& th : pool) th.join();
-  double sum = 0;
-  for (double r : rates) sum += r;
-  return sum;
+  return sum_over_threads(threads, [&](int) { return ours(spec, 2, seconds); });
 }
 
 }  // namespace

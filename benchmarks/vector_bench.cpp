@@ -21,14 +21,7 @@ constexpr int kAgents = 2;  // sandbox 1v1, both slots played by the vector clie
 // Bare physics of the same scene on every core at once: one thread per core, each stepping
 // sandbox matches back to back; total ticks per second.
 double bare_ticks_all_cores(int cores, double seconds) {
-  std::vector<double> rates(cores);
-  std::vector<std::thread> threads;
-  for (int c = 0; c < cores; ++c)
-    threads.emplace_back([&, c] { rates[c] = sandbox_ticks_per_second(4, seconds); });
-  for (auto& t : threads) t.join();
-  double total = 0;
-  for (double r : rates) total += r;
-  return total;
+  return sum_over_threads(cores, [&](int) { return sandbox_ticks_per_second(4, seconds); });
 }
 
 // Agent-steps per second of one vector client, zero actions, for `seconds`.

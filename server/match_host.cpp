@@ -326,6 +326,13 @@ void MatchHost::note_in_progress(const MatchRuntime& runtime, const MatchIdentit
   }
 }
 
+// Who sent a routed message: the client id its join or heartbeat carried, or an action batch's.
+std::string MatchHost::sender(const std::string& client_id, const std::uint8_t* data, int size) {
+  if (!client_id.empty()) return client_id;
+  auto batch = protocol::decode<olympics::action_batch_t>(data, size);
+  return batch ? batch->client_id : "";
+}
+
 void MatchHost::route(const std::string& match_id, const std::string& channel,
                       const std::uint8_t* data, int size, const std::string& client_id) {
   int worker = -1;
@@ -335,10 +342,7 @@ void MatchHost::route(const std::string& match_id, const std::string& channel,
       worker = it->second;
     else if (auto f = finished_.find(match_id); f != finished_.end()) {
       // Whoever still asks missed the end: its last observation batch again, then the result.
-      std::string from = client_id;
-      if (from.empty())
-        if (auto batch = protocol::decode<olympics::action_batch_t>(data, size))
-          from = batch->client_id;
+      const std::string from = sender(client_id, data, size);
       if (auto b = f->second.final_batches.find(from); b != f->second.final_batches.end())
         transport_.publish(f->second.obs_channel, b->second);
       transport_.publish(protocol::kResult, f->second.result);
@@ -350,11 +354,7 @@ void MatchHost::route(const std::string& match_id, const std::string& channel,
     if (match_id.rfind(settings_.server_id + "-", 0) != 0) return;
     // Ours, but not (or no longer) here: a match of an earlier run of this server. Its client
     // learns so at once (its id addresses the error), and gives up.
-    std::string to = client_id;
-    if (to.empty())
-      if (auto batch = protocol::decode<olympics::action_batch_t>(data, size))
-        to = batch->client_id;
-    return error(match_id, to, "UNKNOWN_MATCH",
+    return error(match_id, sender(client_id, data, size), "UNKNOWN_MATCH",
                  "no match \"" + match_id + "\" on server " + settings_.server_id +
                      "; request one on " + protocol::kRequest + " and use the match_id it returns");
   }

@@ -66,6 +66,7 @@ class MatchHost {
   void on_request(const std::uint8_t* data, int size);
   void route(const std::string& match_id, const std::string& channel, const std::uint8_t* data,
              int size, const std::string& client_id);
+  static std::string sender(const std::string& client_id, const std::uint8_t* data, int size);
   void on_announce(const olympics::server_announce_t& announce);
   bool should_take_unaddressed_request();
   void announce();

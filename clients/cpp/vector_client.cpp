@@ -65,7 +65,6 @@ void VectorClient::start_next_match(Env& env) {
   env.phase = Env::Phase::kRequesting;
   connection_.send_request(env.request);
   env.next_send = Connection::Clock::now() + seconds(kResendS);
-  env.last_progress = Connection::Clock::now();
 }
 
 // Moves one environment along: request answered → join; join accepted → play; observation in.

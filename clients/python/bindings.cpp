@@ -79,6 +79,18 @@ py::dict result_dict(const olympics::match_result_t& r) {
   d["info"] = r.info;
   return d;
 }
+ClientOptions client_options(const std::string& lcm_url, const std::string& agent_name,
+                             const std::string& policy_id, const std::string& policy_version,
+                             const std::string& secret_file) {
+  ClientOptions o;
+  o.lcm_url = lcm_url;
+  o.agent_name = agent_name;
+  o.policy_id = policy_id;
+  o.policy_version = policy_version;
+  o.secret_file = secret_file;
+  return o;
+}
+
 }  // namespace olympics::python
 
 using olympics::python::result_dict;
@@ -92,13 +104,8 @@ PYBIND11_MODULE(_client, m) {
       .def(py::init([](const std::string& lcm_url, const std::string& agent_name,
                        const std::string& policy_id, const std::string& policy_version,
                        const std::string& secret_file) {
-             ClientOptions o;
-             o.lcm_url = lcm_url;
-             o.agent_name = agent_name;
-             o.policy_id = policy_id;
-             o.policy_version = policy_version;
-             o.secret_file = secret_file;
-             return std::make_unique<MatchClient>(o);
+             return std::make_unique<MatchClient>(olympics::python::client_options(
+                 lcm_url, agent_name, policy_id, policy_version, secret_file));
            }),
            py::arg("lcm_url") = "", py::arg("agent_name") = "python", py::arg("policy_id") = "",
            py::arg("policy_version") = "", py::arg("secret_file") = "")

@@ -60,12 +60,8 @@ void bind_vector_client(py::module_& m) {
                        const std::string& policy_id, const std::string& policy_version,
                        const std::string& secret_file, double drop_rate,
                        const std::string& learner) {
-             ClientOptions o;
-             o.lcm_url = lcm_url;
-             o.agent_name = agent_name;
-             o.policy_id = policy_id;
-             o.policy_version = policy_version;
-             o.secret_file = secret_file;
+             ClientOptions o =
+                 client_options(lcm_url, agent_name, policy_id, policy_version, secret_file);
              o.drop_rate = drop_rate;
              VectorSettings v;
              v.num_envs = num_envs;

@@ -109,12 +109,10 @@ class OlympicsVectorEnv:
         return actions
 
     def _unpack(self, b):
-        truncations = b["truncated"]
-        terminations = b["terminated"]
         infos = {"reward_terms": b["terms"], "term_names": self.term_names,
                  "episode_over": b["episode_over"], "final_observation": b["final_obs"],
                  "tick": b["tick"]}
-        return b["envs"], b["obs"], b["reward"], terminations, truncations, infos
+        return b["envs"], b["obs"], b["reward"], b["terminated"], b["truncated"], infos
 
 
 def _fresh_seed():
