@@ -163,6 +163,11 @@ class SportMatch {
   virtual void forfeit(int losing_team, const std::string& reason) = 0;
   // Hash of the complete physical state, for replays that must reproduce bit for bit.
   virtual std::uint64_t state_hash() const = 0;
+  // Scene data for viewers (framework/scene_view.h): the description once, then after any tick
+  // the poses of its moving bodies, 7 floats each in the description's body order. A match with
+  // nothing to draw returns null and no poses.
+  virtual nlohmann::json scene_description() const { return nullptr; }
+  virtual void scene_poses(std::vector<float>& out) const { out.clear(); }
 };
 
 class Sport {

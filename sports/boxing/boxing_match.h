@@ -51,6 +51,7 @@ class BoxingMatch : public SmplMatch {
   void after_physics_step(double step_start) override;
   void settle_tick() override;
   void on_time_limit() override;
+  void describe_scene(SceneBuilder& scene) const override { config_.ring.describe(scene); }
 
   void log_calls();
   void back_to_corners();

@@ -5,9 +5,11 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <vector>
 
 #include "core/humanoid.h"
 #include "core/physics_world.h"
+#include "framework/scene_view.h"
 
 namespace olympics::sports::boxing {
 
@@ -16,8 +18,17 @@ struct Ring {
   double start = 1.0;  // each boxer's start, m from the centre
 
   double half() const { return size / 2; }
+  // A rope or a post: a capsule from a to b.
+  struct Bar {
+    Eigen::Vector3d a, b;
+    double radius, restitution;
+    bool post;
+  };
+  std::vector<Bar> bars() const;
   // Ropes and posts into `world`.
   void build(core::PhysicsWorld& world) const;
+  // The canvas, ropes and posts, for viewers.
+  void describe(SceneBuilder& scene) const;
 
   static constexpr double kRopeHeights[4] = {0.4, 0.7, 1.0, 1.3};
   static constexpr double kRopeRadius = 0.02;

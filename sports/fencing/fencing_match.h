@@ -42,6 +42,7 @@ class FencingMatch : public SmplMatch {
   void after_physics_step(double step_start) override;
   void settle_tick() override;
   void on_time_limit() override;
+  void describe_scene(SceneBuilder& scene) const override { config_.piste.describe(scene); }
 
   void record_halt(const Halt& halt);
   void back_on_guard();

@@ -128,4 +128,29 @@ std::uint64_t SmplMatch::state_hash() const {
   return core::state_hash(scene_, extra);
 }
 
+nlohmann::json SmplMatch::scene_description() const {
+  SceneBuilder scene;
+  for (int s = 0; s < slot_count(); ++s) {
+    const core::ModelSpec& spec = player(s).spec();
+    for (const auto& body : spec.bodies) {
+      const int b = scene.add_body("slot" + std::to_string(s) + "/" + body.name, s, "player");
+      for (const auto& g : body.geoms) scene.add_geom(b, g, g.collides ? "player" : "equipment");
+    }
+  }
+  describe_scene(scene);
+  nlohmann::json out = scene.json();
+  out["teams"] = mode_.slot_teams;
+  return out;
+}
+
+void SmplMatch::scene_poses(std::vector<float>& out) const {
+  out.clear();
+  for (int s = 0; s < slot_count(); ++s)
+    for (int b = 0; b < player(s).body_count(); ++b) {
+      const core::BodyState st = player(s).body_state(b);
+      append_pose(out, st.position, st.orientation);
+    }
+  extra_scene_poses(out);
+}
+
 }  // namespace olympics::sports

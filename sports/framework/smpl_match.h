@@ -23,6 +23,7 @@
 #include "framework/heading_frame.h"
 #include "framework/observation_writer.h"
 #include "framework/referee_events.h"
+#include "framework/scene_view.h"
 #include "sport.h"
 
 namespace olympics::sports {
@@ -43,6 +44,9 @@ class SmplMatch : public SportMatch {
   int tick() const final { return tick_; }
   void forfeit(int losing_team, const std::string& reason) final;
   std::uint64_t state_hash() const final;
+  // The players' bodies and what they hold, then the sport's arena (describe_scene).
+  nlohmann::json scene_description() const final;
+  void scene_poses(std::vector<float>& out) const final;
   // The world as it stands, read-only (tests, scene data for viewers).
   const core::HumanoidScene& scene() const { return scene_; }
 
@@ -66,6 +70,10 @@ class SmplMatch : public SportMatch {
   virtual void on_time_limit();
   // State kept outside the scene's bodies (a ball flown outside ODE), hashed after them.
   virtual void extra_state(std::vector<double>& values) const { (void)values; }
+  // For viewers: the arena and any moving body the players do not carry (a ball), and each
+  // tick the poses of the bodies it added, in order (scene_view.h).
+  virtual void describe_scene(SceneBuilder& scene) const { (void)scene; }
+  virtual void extra_scene_poses(std::vector<float>& out) const { (void)out; }
 
   // ---- What the framework gives it.
   // Adds the humanoid of the next slot; `fall_exempt` bodies may touch the ground besides the

@@ -8,6 +8,7 @@
 #include "racket/ball_launcher.h"
 #include "racket/racket_equipment.h"
 #include "racket/racket_rewards.h"
+#include "racket/racket_scene.h"
 
 namespace olympics::sports::racket {
 namespace {
@@ -329,6 +330,16 @@ void RacketMatch::extra_state(std::vector<double>& values) const {
   const Eigen::Vector3d& p = flight_.position();
   const Eigen::Vector3d& v = flight_.velocity();
   values.insert(values.end(), {p.x(), p.y(), p.z(), v.x(), v.y(), v.z()});
+}
+
+void RacketMatch::describe_scene(SceneBuilder& scene) const {
+  describe_racket_arena(config_.game, scene);
+  scene.add_sphere(scene.add_body("ball", -1, "ball"), Eigen::Vector3d::Zero(),
+                   config_.game.ball.radius, "ball");
+}
+
+void RacketMatch::extra_scene_poses(std::vector<float>& out) const {
+  append_pose(out, flight_.position(), Eigen::Quaterniond::Identity());
 }
 
 }  // namespace olympics::sports::racket

@@ -55,6 +55,8 @@ class RacketMatch : public SmplMatch {
   void settle_tick() override;
   void on_time_limit() override;
   void extra_state(std::vector<double>& values) const override;
+  void describe_scene(SceneBuilder& scene) const override;
+  void extra_scene_poses(std::vector<float>& out) const override;
 
   void start_point();
   void handle_contact(const equipment::BallContact& c, double t);

@@ -204,6 +204,43 @@ TEST_P(Conformance, UnknownSettingsAndModesAreRefusedByName) {
   }
 }
 
+// Viewers draw every sport from the same scene data (framework/scene_view.h): each slot's
+// humanoid, shapes on bodies that exist, one pose per body each tick, and the poses follow the
+// simulation (the players' roots are where their observation says they are).
+TEST_P(Conformance, TheSceneDescribesEveryBodyAndItsPosesFollowPlay) {
+  auto m = make(5, 2.0);
+  const nlohmann::json scene = m->scene_description();
+  ASSERT_TRUE(scene.is_object());
+  const auto& bodies = scene.at("bodies");
+  std::vector<int> per_slot(m->slot_count(), 0);
+  for (const auto& b : bodies) {
+    const int slot = b.at("slot");
+    ASSERT_LT(slot, m->slot_count());
+    if (slot >= 0) ++per_slot[slot];
+  }
+  for (int n : per_slot) EXPECT_GE(n, 24) << "every SMPL body of every slot";
+  for (const auto& shape : scene.at("shapes")) {
+    EXPECT_GE(shape.at("body").get<int>(), -1);
+    EXPECT_LT(shape.at("body").get<int>(), static_cast<int>(bodies.size()));
+    EXPECT_EQ(shape.at("size").size(), 3u);
+    EXPECT_EQ(shape.at("quat").size(), 4u);
+  }
+  EXPECT_EQ(scene.at("teams").size(), static_cast<size_t>(m->slot_count()));
+  std::vector<float> before, after;
+  m->scene_poses(before);
+  ASSERT_EQ(before.size(), 7 * bodies.size());
+  Actions actions(*m, 3);
+  for (int t = 0; t < 20 && !m->outcome().match_over; ++t) m->step(actions.next());
+  m->scene_poses(after);
+  ASSERT_EQ(after.size(), before.size());
+  EXPECT_NE(after, before) << "bodies moved under random actions";
+  for (float v : after) ASSERT_TRUE(std::isfinite(v));
+  // Slot 0's root pose is its first body; its height is the self observation's first entry.
+  std::vector<float> obs(m->obs_size());
+  m->observe(0, obs);
+  EXPECT_NEAR(after[2], obs[0], 1e-4);
+}
+
 INSTANTIATE_TEST_SUITE_P(EveryRegisteredSport, Conformance,
                          ::testing::ValuesIn(every_sport_and_mode()),
                          [](const ::testing::TestParamInfo<SportMode>& info) {
