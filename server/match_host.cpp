@@ -281,6 +281,15 @@ void MatchHost::on_request(const std::uint8_t* data, int size) {
   auto runtime =
       std::make_unique<MatchRuntime>(id, req->realtime ? settings_.realtime : settings_.sync,
                                      std::move(game), transport_, std::move(log));
+  const bool scene_file = settings_.scene_tracks && !settings_.replay_dir.empty();
+  if (scene_file || settings_.live)
+    runtime->record_scene(std::make_unique<SceneRecorder>(
+        scene_file ? settings_.replay_dir + "/" + id.match_id + ".scene" : "",
+        settings_.live ? settings_.live->add(id.match_id, {{"match_id", id.match_id},
+                                                           {"sport", id.sport},
+                                                           {"mode", id.settings.mode},
+                                                           {"seed", id.settings.seed}})
+                       : nullptr));
   note_in_progress(*runtime, id);
   olympics::match_created_t created = runtime->description();
   created.request_id = req->request_id;

@@ -15,6 +15,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "live_scenes.h"
 #include "match_runtime.h"
 #include "olympics/match_created_t.hpp"
 #include "olympics/match_result_t.hpp"
@@ -26,12 +27,14 @@ namespace olympics::server {
 
 struct HostSettings {
   std::string server_id;
-  int capacity = 64;         // matches at once
-  int workers = 0;           // threads stepping matches; 0 = one per core
-  RuntimeSettings sync;      // lockstep matches
-  RuntimeSettings realtime;  // 30 Hz clock matches
-  std::string replay_dir;    // "" = no replays
-  bool lcm_logs = false;     // also write <match>.lcmlog beside the replay
+  int capacity = 64;           // matches at once
+  int workers = 0;             // threads stepping matches; 0 = one per core
+  RuntimeSettings sync;        // lockstep matches
+  RuntimeSettings realtime;    // 30 Hz clock matches
+  std::string replay_dir;      // "" = no replays
+  bool lcm_logs = false;       // also write <match>.lcmlog beside the replay
+  bool scene_tracks = true;    // also write <match>.scene (for viewers) beside the replay
+  LiveScenes* live = nullptr;  // publish every match's scene track to live viewers
   double announce_interval_s = 1.0;
 };
 

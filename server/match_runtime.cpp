@@ -228,6 +228,27 @@ void MatchRuntime::start(Clock::time_point now) {
   next_resend_ = now + seconds(resend_gap_s_);
   next_realtime_tick_ = now + seconds(kRealtimePeriod);
   publish_observations(all_clients());
+  record([&](SceneRecorder& r) {
+    r.start(*game_, identity_.sport,
+            {{"match_id", identity_.match_id},
+             {"server_id", identity_.server_id},
+             {"mode", identity_.settings.mode},
+             {"seed", identity_.settings.seed},
+             {"options", identity_.settings.options},
+             {"realtime", identity_.realtime},
+             {"agents", m.agent_names}});
+  });
+}
+
+template <typename Step>
+void MatchRuntime::record(Step step) {
+  if (!scene_) return;
+  try {
+    step(*scene_);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "[%s] scene track dropped: %s\n", identity_.match_id.c_str(), e.what());
+    scene_.reset();
+  }
 }
 
 // A heartbeat counts only from a client of this match, in this protocol version; anything else
@@ -347,6 +368,7 @@ void MatchRuntime::advance(Clock::time_point now) {
     replay_actions_.insert(replay_actions_.end(), a.begin(), a.end());
   }
   game_->step(actions);
+  record([&](SceneRecorder& r) { r.tick(*game_); });
   tick_deadline_ = now + seconds(settings_.action_deadline_s);
   resend_gap_s_ = settings_.resend_interval_s;
   next_resend_ = now + seconds(resend_gap_s_);
@@ -396,6 +418,7 @@ void MatchRuntime::forfeit(int client, const std::string& why, Clock::time_point
   std::fprintf(stderr, "[%s] %s\n", identity_.match_id.c_str(), reason.c_str());
   forfeit_ = nlohmann::json{{"tick", game_->tick()}, {"team", team}, {"reason", reason}};
   game_->forfeit(team, reason);
+  if (phase_ == Phase::Running) record([&](SceneRecorder& r) { r.tick(*game_); });
   publish_observations(all_clients());
   finish(now);
 }
@@ -434,6 +457,7 @@ void MatchRuntime::finish(Clock::time_point now) {
   }
   r.info = out.info.dump();
   r.options = identity_.settings.options.dump();
+  record([&](SceneRecorder& rec) { rec.finish(*game_); });
   // The host stores the result first and then publishes it (publish_result), so whoever hears
   // the result can read it from the store.
 }

@@ -25,6 +25,7 @@
 #include "olympics/observation_batch_t.hpp"
 #include "replay.h"
 #include "results_store.h"
+#include "scene_recorder.h"
 #include "sport.h"
 #include "traffic_log.h"
 #include "transport.h"
@@ -79,6 +80,8 @@ class MatchRuntime {
   bool take_started();
   std::vector<std::string> client_ids() const;
   Replay replay() const;
+  // Record the scene track (for viewers) from the start of play; call before it starts.
+  void record_scene(std::unique_ptr<SceneRecorder> recorder) { scene_ = std::move(recorder); }
 
  private:
   enum class Phase { Joining, Running, Finished };
@@ -98,6 +101,9 @@ class MatchRuntime {
   void advance(Clock::time_point now);
   void publish_observations(const std::vector<int>& clients);
   void finish(Clock::time_point now);
+  // Runs a recorder step; a recorder that fails (disk full) is dropped, the match goes on.
+  template <typename Step>
+  void record(Step step);
   void forfeit(int client, const std::string& why, Clock::time_point now);
   void error(const std::string& client_id, const std::string& code, const std::string& message);
   int client_index(const std::string& client_id) const;
@@ -111,6 +117,7 @@ class MatchRuntime {
   std::unique_ptr<sports::SportMatch> game_;
   protocol::Transport& transport_;
   std::unique_ptr<TrafficLog> log_;
+  std::unique_ptr<SceneRecorder> scene_;
   olympics::match_created_t description_;
 
   Phase phase_ = Phase::Joining;

@@ -61,7 +61,8 @@ Replay read_replay(const std::string& path) {
   return r;
 }
 
-ReplayCheck verify_replay(const Replay& r) {
+std::unique_ptr<sports::SportMatch> rerun_replay(
+    const Replay& r, const std::function<void(const sports::SportMatch&)>& on_tick) {
   const auto& h = r.header;
   const sports::Sport& sport = sports::sport_or_throw(h.at("sport"));
   sports::MatchSettings settings{h.at("mode"), h.at("seed").get<std::uint64_t>(),
@@ -69,7 +70,8 @@ ReplayCheck verify_replay(const Replay& r) {
                                  h.value("options", nlohmann::json::object())};
   auto match = sport.create(settings);
   if (match->slot_count() != r.slot_count || match->action_size() != r.action_size)
-    return {false, "the replay's slots or action size do not match the sport's"};
+    throw std::runtime_error("the replay's slots or action size do not match the sport's");
+  if (on_tick) on_tick(*match);
   const int forfeit_tick = h.contains("forfeit") ? h["forfeit"].at("tick").get<int>() : -1;
   std::vector<std::span<const float>> actions(r.slot_count);
   for (int t = 0; t < r.ticks() && !match->outcome().match_over; ++t) {
@@ -78,11 +80,23 @@ ReplayCheck verify_replay(const Replay& r) {
           r.actions.data() + (static_cast<size_t>(t) * r.slot_count + s) * r.action_size,
           r.action_size);
     match->step(actions);
+    if (on_tick) on_tick(*match);
   }
-  if (forfeit_tick >= 0 && match->tick() == forfeit_tick)
+  if (forfeit_tick >= 0 && match->tick() == forfeit_tick) {
     match->forfeit(h["forfeit"].at("team"), h["forfeit"].at("reason"));
+    if (on_tick) on_tick(*match);
+  }
+  return match;
+}
 
-  const auto& want = h.at("result");
+ReplayCheck verify_replay(const Replay& r) {
+  std::unique_ptr<sports::SportMatch> match;
+  try {
+    match = rerun_replay(r, nullptr);
+  } catch (const std::runtime_error& e) {
+    return {false, e.what()};
+  }
+  const auto& want = r.header.at("result");
   const auto& got = match->outcome();
   std::vector<double> got_scores(got.scores.begin(), got.scores.end());
   std::ostringstream report;

@@ -7,9 +7,13 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
+
+#include "sport.h"
 
 namespace olympics::server {
 
@@ -34,6 +38,12 @@ struct ReplayCheck {
   bool identical = false;
   std::string report;  // what was compared and what differed
 };
+// Re-runs the match from the replay, calling `on_tick` (if given) before the first tick and
+// after every tick (and after a recorded forfeit); returns the match as it ends. Throws
+// std::runtime_error when the replay does not fit its sport.
+std::unique_ptr<sports::SportMatch> rerun_replay(
+    const Replay& replay, const std::function<void(const sports::SportMatch&)>& on_tick);
+
 // Re-runs the match from the replay and compares ticks, reason, winner, scores and state hash.
 ReplayCheck verify_replay(const Replay& replay);
 

@@ -110,6 +110,9 @@ void load_server_config_file(const std::string& path, ServerConfig& c) {
     in.read("results", c.results);
     in.read("replay_dir", c.host.replay_dir);
     in.read("lcm_logs", c.host.lcm_logs);
+    in.read("scene_tracks", c.host.scene_tracks);
+    in.read("view_port", c.view_port);
+    in.read("view_host", c.view_host);
     in.read("secret_file", c.secret_file);
   }
   if (auto* t = root["sync"].as_table()) read_runtime(path, *t, "sync", c.host.sync);
@@ -133,6 +136,9 @@ void apply_flags(const ServerFlags& f, ServerConfig& c) {
   if (f.results) c.results = *f.results;
   if (f.replay_dir) c.host.replay_dir = *f.replay_dir;
   if (f.lcm_logs) c.host.lcm_logs = true;
+  if (f.no_scene_tracks) c.host.scene_tracks = false;
+  if (f.view_port) c.view_port = *f.view_port;
+  if (f.view_host) c.view_host = *f.view_host;
   if (f.capacity) c.host.capacity = *f.capacity;
   if (f.workers) c.host.workers = *f.workers;
   if (f.drop_rate) c.transport.drop_rate = *f.drop_rate;
@@ -177,6 +183,7 @@ void validate_server_config(const ServerConfig& c) {
         id + "\"");
   in_range("server.capacity (--capacity)", c.host.capacity, 1, 100000);
   in_range("server.workers (--workers)", c.host.workers, 0, 1024);
+  in_range("server.view_port (--view-port)", c.view_port, 0, 65535);
   validate_runtime("sync", c.host.sync);
   validate_runtime("realtime", c.host.realtime);
   if (c.transport.drop_rate < 0 || c.transport.drop_rate >= 1)
@@ -205,13 +212,17 @@ std::string describe_server_config(const ServerConfig& c) {
   const auto& s = c.host.sync;
   std::snprintf(
       text, sizeof text,
-      "config ok: id %s, lcm %s, capacity %d, workers %d, results %s, replays %s, secret %s\n"
+      "config ok: id %s, lcm %s, capacity %d, workers %d, results %s, replays %s%s, secret %s\n"
+      "live viewer: %s\n"
       "sync: deadline %.0f ms, %d missed ticks, resend %.0f ms, silent %.1f s, join %.0f s\n"
       "realtime: %d missed ticks, silent %.1f s\n",
       c.host.server_id.c_str(), c.transport.url.empty() ? "(default)" : c.transport.url.c_str(),
       c.host.capacity, c.host.workers, c.results.c_str(),
       c.host.replay_dir.empty() ? "(none)" : c.host.replay_dir.c_str(),
+      c.host.replay_dir.empty() || !c.host.scene_tracks ? "" : " with scene tracks",
       c.secret_file.empty() ? "(none: $OLYMPICS_SECRET_FILE or unsigned)" : c.secret_file.c_str(),
+      c.view_port ? ("http://" + c.view_host + ":" + std::to_string(c.view_port) + "/").c_str()
+                  : "(none: --view-port)",
       s.action_deadline_s * 1000, s.max_missed_ticks, s.resend_interval_s * 1000,
       s.silent_timeout_s, s.join_timeout_s, c.host.realtime.max_missed_ticks,
       c.host.realtime.silent_timeout_s);

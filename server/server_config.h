@@ -16,16 +16,19 @@ struct ServerConfig {
   protocol::TransportOptions transport;
   std::string results = "olympics-results.db";  // SQLite path or postgresql:// URL
   std::string secret_file;                      // "" = $OLYMPICS_SECRET_FILE, or none
+  int view_port = 0;                            // live viewer's HTTP port; 0 = none
+  std::string view_host = "127.0.0.1";          // where it listens (0.0.0.0: every interface)
 };
 
 // What the command line gave; each set one wins over the file.
 struct ServerFlags {
-  std::optional<std::string> id, lcm_url, secret_file, results, replay_dir;
-  std::optional<int> capacity, workers, max_missed_ticks;
+  std::optional<std::string> id, lcm_url, secret_file, results, replay_dir, view_host;
+  std::optional<int> capacity, workers, max_missed_ticks, view_port;
   std::optional<double> action_deadline_ms, resend_ms, silent_timeout_s, join_timeout_s;
   std::optional<double> drop_rate;
   std::optional<std::uint64_t> drop_seed;
   bool lcm_logs = false;
+  bool no_scene_tracks = false;
 };
 
 ServerConfig default_server_config();
