@@ -5,11 +5,14 @@
 //   olympics-server describe [SPORT] [--mode M] [--json]  layout of a sport (or all)
 //   olympics-server results [--results DB] [--limit N] [--sport S] [--json]
 //   olympics-server replay FILE                       re-run a match, check it reproduces
+//   olympics-server view FILE [--port P] [--export HTML]  watch a match in the browser
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdio>
 #include <ctime>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <thread>
 
 #include "catalog.h"
 #include "core/control_rate.h"
@@ -17,8 +20,10 @@
 #include "registry.h"
 #include "replay.h"
 #include "results_store.h"
+#include "scene_recorder.h"
 #include "server_config.h"
 #include "version.h"
+#include "view_server.h"
 
 namespace {
 
@@ -31,6 +36,13 @@ int serve(server::ServerConfig config) {
   config.transport.auth = protocol::load_secret(config.secret_file);
   auto store = server::open_results_store(config.results);
   protocol::Transport transport(config.transport);
+  server::LiveScenes live;
+  std::unique_ptr<server::ViewServer> viewer;
+  if (config.view_port) {
+    config.host.live = &live;
+    viewer = std::make_unique<server::ViewServer>(live, config.view_host, config.view_port);
+    viewer->start();
+  }
   server::MatchHost host(config.host, transport, *store);
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
@@ -38,6 +50,9 @@ int serve(server::ServerConfig config) {
               protocol::kSoftwareVersion, protocol::kProtocolVersion, config.host.server_id.c_str(),
               transport.url().c_str(), store->describe().c_str(),
               config.transport.drop_rate > 0 ? " [TEST: dropping datagrams]" : "");
+  if (viewer)
+    std::printf("live viewer on http://%s:%d/ (pick a match to watch)\n", config.view_host.c_str(),
+                viewer->port());
   if (transport.authenticating())
     std::printf("messages are signed and checked with the deployment secret\n");
   else
@@ -183,6 +198,50 @@ int replay(const std::string& path) {
   return check.identical ? 0 : 1;
 }
 
+// The scene track of FILE: a .scene file, or a .replay's (beside it; made by re-running the
+// replay when it is not there, e.g. for replays written without scene tracks).
+std::string scene_track_for(const std::string& file) {
+  auto ends_with = [&](const std::string& tail) {
+    return file.size() >= tail.size() &&
+           file.compare(file.size() - tail.size(), tail.size(), tail) == 0;
+  };
+  if (ends_with(".scene")) return file;
+  if (!ends_with(".replay"))
+    throw std::invalid_argument(file + " is neither a .replay nor a .scene file");
+  const std::string scene = file.substr(0, file.size() - 7) + ".scene";
+  if (std::ifstream(scene).good()) return scene;
+  std::printf("no scene track beside %s: re-running the replay to make %s\n", file.c_str(),
+              scene.c_str());
+  server::record_scene_from_replay(server::read_replay(file), scene);
+  return scene;
+}
+
+int view(const std::string& file, const std::string& host, int port, const std::string& export_to) {
+  const std::string scene = scene_track_for(file);
+  std::ifstream in(scene, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const server::SceneTrack track = server::decode_scene(server::read_scene_file(scene));
+  std::printf("%s: %s %s, %zu frames (%.1f s)\n", scene.c_str(),
+              track.header.value("sport", "?").c_str(), track.header.value("mode", "?").c_str(),
+              track.frames.size(), track.frames.size() / double(core::kControlHz));
+  if (!export_to.empty()) {
+    std::ofstream out(export_to, std::ios::binary);
+    out << server::export_viewer_page(bytes);
+    if (!out.flush()) throw std::runtime_error("cannot write " + export_to);
+    std::printf("wrote %s: one file, open it in a browser\n", export_to.c_str());
+    return 0;
+  }
+  server::ViewServer viewer(bytes, host, port);
+  std::printf("watch it on http://%s:%d/ (Ctrl-C to stop)\n", host.c_str(), viewer.port());
+  std::fflush(stdout);
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  viewer.start();
+  while (!g_stop) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  viewer.stop();
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -204,6 +263,12 @@ int main(int argc, char** argv) {
   serve_cmd->add_option("--results", flags.results, "SQLite file or postgresql:// URL");
   serve_cmd->add_option("--replay-dir", flags.replay_dir, "write <match>.replay files here");
   serve_cmd->add_flag("--lcm-logs", flags.lcm_logs, "also write <match>.lcmlog (lcm-logplayer)");
+  serve_cmd->add_flag("--no-scene-tracks", flags.no_scene_tracks,
+                      "do not write <match>.scene (the viewer's data) beside replays");
+  serve_cmd->add_option("--view-port", flags.view_port,
+                        "serve the live viewer on this HTTP port (docs/viewer.md)");
+  serve_cmd->add_option("--view-host", flags.view_host,
+                        "the live viewer's address (default 127.0.0.1: this machine only)");
   serve_cmd->add_option("--action-deadline-ms", flags.action_deadline_ms,
                         "how long a sync tick waits for actions");
   serve_cmd->add_option("--max-missed-ticks", flags.max_missed_ticks,
@@ -251,6 +316,17 @@ int main(int argc, char** argv) {
       app.add_subcommand("replay", "re-run a recorded match and check it reproduces");
   replay_cmd->add_option("file", replay_file, "a .replay file")->required();
 
+  std::string view_file, view_export, view_host = "127.0.0.1";
+  int view_port = 8080;
+  auto* view_cmd =
+      app.add_subcommand("view", "watch a recorded match in the browser (docs/viewer.md)");
+  view_cmd->add_option("file", view_file, "a .replay (its .scene beside it) or a .scene file")
+      ->required();
+  view_cmd->add_option("--port", view_port, "HTTP port (0: any free one)");
+  view_cmd->add_option("--host", view_host, "address to listen on");
+  view_cmd->add_option("--export", view_export,
+                       "write one self-contained HTML page to this file instead of serving");
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (*serve_cmd) {
@@ -290,6 +366,7 @@ int main(int argc, char** argv) {
     }
     if (*results_cmd) return results(results_location, limit, results_sport, json);
     if (*replay_cmd) return replay(replay_file);
+    if (*view_cmd) return view(view_file, view_host, view_port, view_export);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "olympics-server: %s\n", e.what());
     return 2;
