@@ -46,6 +46,9 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"udpm", "mpudpm"}));
   serv->add_flag("--signed", server.signed_messages,
                  "with a deployment secret: every message signed and checked");
+  serv->add_option("--live-viewers", server.live_viewers,
+                   "this many HTTP clients watch the matches live (the viewer's cost)")
+      ->check(CLI::NonNegativeNumber);
   olympics::bench::RacketBenchOptions racket;
   auto* rack = app.add_subcommand(
       "racket", "tennis / table tennis: scripted touch rate, match ticks/s vs bare physics");

@@ -16,6 +16,10 @@
 #include "match_host.h"
 #include "registry.h"
 #include "results_store.h"
+#include "view_server.h"
+
+// Last: httplib.h (through OpenSSL and zlib) must come after Eigen, which it breaks otherwise.
+#include <httplib.h>  // NOLINT
 
 namespace olympics::bench {
 namespace {
@@ -34,6 +38,31 @@ double percentile(std::vector<double> v, double p) {
   if (v.empty()) return 0;
   std::sort(v.begin(), v.end());
   return v[std::min(v.size() - 1, static_cast<size_t>(p * v.size()))];
+}
+
+// A person watching live: picks the `which`-th match being played from the server's list and
+// follows its stream until it ends, then the next one; counts what arrives.
+void watch_live(int port, int which, const std::atomic<bool>& stop, std::atomic<long>& bytes) {
+  httplib::Client http("127.0.0.1", port);
+  http.set_read_timeout(2, 0);
+  while (!stop) {
+    auto list = http.Get("/api/matches");
+    std::string match;
+    if (list && list->status == 200) {
+      std::vector<std::string> playing;
+      for (const auto& m : nlohmann::json::parse(list->body))
+        if (!m.at("ended").get<bool>()) playing.push_back(m.at("match_id"));
+      if (!playing.empty()) match = playing[which % playing.size()];
+    }
+    if (match.empty()) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      continue;
+    }
+    http.Get("/api/live/" + match, [&](const char*, size_t n) {
+      bytes += static_cast<long>(n);
+      return !stop;
+    });
+  }
 }
 
 }  // namespace
@@ -64,6 +93,13 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
   settings.workers = o.workers;
   settings.capacity = o.matches * 4;
   settings.sync.action_deadline_s = 30;  // clients pause while the bare figure is taken
+  server::LiveScenes live;
+  std::unique_ptr<server::ViewServer> view;
+  if (o.live_viewers > 0) {
+    settings.live = &live;
+    view = std::make_unique<server::ViewServer>(live, "127.0.0.1", 0);
+    view->start();
+  }
   if (pin) pin_this_thread(0, o.workers - 1);
   server::MatchHost host(settings, server_transport, store);
   if (pin) pin_this_thread(o.workers, cores - 1);
@@ -104,6 +140,11 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
         c.wait_result();
       }
     });
+  std::atomic<long> viewed_bytes{0};
+  std::vector<std::thread> viewers;
+  for (int v = 0; v < o.live_viewers; ++v)
+    viewers.emplace_back([&, v] { watch_live(view->port(), v, stop_clients, viewed_bytes); });
+  const auto measuring_from = Clock::now();
   // Served and bare windows alternate, so the machine's noise hits both alike; the ratio of each
   // pair is taken and the median reported.
   constexpr int kRounds = 3;
@@ -129,8 +170,11 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
     // What a fully busy core would serve: ticks per second of worker CPU time.
     capacity_ratios.push_back(served_ticks / worker_cpu / bare_rates.back());
   }
+  const double measured_s = std::chrono::duration<double>(Clock::now() - measuring_from).count();
   stop_clients = true;
   for (auto& t : clients) t.join();
+  for (auto& t : viewers) t.join();
+  if (view) view->stop();
   stop_server = true;
   server_thread.join();
   std::remove(db);
@@ -141,6 +185,8 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
   return {{"scene", "sandbox 1v1 (2 SMPL humanoids), zero actions, sync mode"},
           {"lcm_provider", o.provider},
           {"signed_messages", o.signed_messages},
+          {"live_viewers", o.live_viewers},
+          {"live_view_bytes_per_s", viewed_bytes / measured_s},
           {"matches", o.matches},
           {"server_workers", o.workers},
           {"workers_pinned", pin},
@@ -160,6 +206,9 @@ void print_server_report(const nlohmann::json& r) {
               r["server_workers"].get<int>(),
               r["workers_pinned"].get<bool>() ? ", pinned to cores of their own" : "",
               r["signed_messages"].get<bool>() ? ", every message signed and checked" : "");
+  if (r["live_viewers"].get<int>() > 0)
+    std::printf("  %d live viewers over HTTP received %.0f kB/s of scene data\n",
+                r["live_viewers"].get<int>(), r["live_view_bytes_per_s"].get<double>() / 1000);
   std::printf("  served           %8.0f ticks/s per worker\n",
               r["served_ticks_per_s_per_worker"].get<double>());
   std::printf("  bare physics     %8.0f ticks/s on one core (same scene, no network)\n",

@@ -13,6 +13,7 @@ struct ServerBenchOptions {
   bool pin = true;                // workers alone on their cores, everything else on the others
   bool signed_messages = false;   // a deployment secret: every message signed and checked
   std::string provider = "udpm";  // LCM provider: udpm (one port) or mpudpm (channels on ports)
+  int live_viewers = 0;           // HTTP clients watching matches live (serve --view-port)
 };
 
 nlohmann::json run_server_bench(const ServerBenchOptions& options);
