@@ -1,11 +1,11 @@
 // Scene tracks of the matches being played, for live viewers (olympics-server serve
-// --view-port). The stepping threads publish each tick's records; viewer threads read them at
-// their own pace. A stepping thread never waits for a viewer: it takes one short lock to append,
-// and a viewer that falls behind skips to the newest frame (every frame is a whole pose).
+// --view-port). The stepping threads publish each tick's records; viewer threads poll for them
+// at their own pace. A stepping thread never waits for a viewer nor wakes one: it takes one
+// short lock to append, and a viewer that falls behind skips to the newest frame (every frame
+// is a whole pose).
 #pragma once
 
 #include <chrono>
-#include <condition_variable>
 #include <cstdint>
 #include <deque>
 #include <map>
@@ -38,10 +38,10 @@ class LiveScene {
   std::chrono::steady_clock::time_point ended_at() const;
 
   static constexpr size_t kKeptTicks = 90;  // 3 s at 30 Hz for a viewer that lags
+  static constexpr std::chrono::milliseconds kPollInterval{15};
 
  private:
   mutable std::mutex mutex_;
-  std::condition_variable changed_;
   nlohmann::json summary_;
   std::string header_, last_events_, result_;
   std::deque<std::string> recent_;  // ticks first_seq_ .. next_seq_ - 1

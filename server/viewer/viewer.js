@@ -148,9 +148,12 @@
         const g = geometryOf(shape);
         if (!g) continue;
         const body = shape.body >= 0 ? scene.bodies[shape.body] : null;
-        let color = shape.color || ROLE_COLORS[shape.role] || '#9a9a9a';
-        if (!shape.color && shape.role === 'player' && body)
-          color = TEAM_COLORS[(teams[body.slot] || 0) % TEAM_COLORS.length];
+        let color = new THREE.Color(shape.color || ROLE_COLORS[shape.role] || '#9a9a9a');
+        if (!shape.color && body && body.slot >= 0 && shape.role !== 'ball') {
+          // A player's body in its team's colour, what it holds in a darker shade of it.
+          color = new THREE.Color(TEAM_COLORS[(teams[body.slot] || 0) % TEAM_COLORS.length]);
+          if (shape.role === 'equipment') color.multiplyScalar(0.45);
+        }
         const mesh = new THREE.Mesh(g, new THREE.MeshLambertMaterial({ color }));
         mesh.position.set(...shape.pos);
         mesh.quaternion.set(shape.quat[1], shape.quat[2], shape.quat[3], shape.quat[0]);

@@ -28,6 +28,7 @@ struct GeomSpec {
   double friction = 1.0;
   bool collides = true;  // false: mass only, no ODE geom (e.g. a racket face, see equipment.h)
   bool sensor = false;   // its contacts are reported with their forces (a sword tip, a glove)
+  bool held = false;     // equipment held in a hand, not part of the body (drawn as such)
 };
 
 struct HingeSpec {

@@ -25,7 +25,10 @@ void attach_equipment(core::ModelSpec& spec, const EquipmentSpec& equipment) {
                                 equipment.name);
   auto& geoms = spec.bodies[hand].geoms;
   if (equipment.replaces_hand_geoms) geoms.clear();
-  geoms.insert(geoms.end(), equipment.geoms.begin(), equipment.geoms.end());
+  for (core::GeomSpec g : equipment.geoms) {
+    g.held = true;
+    geoms.push_back(std::move(g));
+  }
 }
 
 Pose equipment_face_pose(const core::Humanoid& humanoid, int hand_body,

@@ -134,7 +134,7 @@ nlohmann::json SmplMatch::scene_description() const {
     const core::ModelSpec& spec = player(s).spec();
     for (const auto& body : spec.bodies) {
       const int b = scene.add_body("slot" + std::to_string(s) + "/" + body.name, s, "player");
-      for (const auto& g : body.geoms) scene.add_geom(b, g, g.collides ? "player" : "equipment");
+      for (const auto& g : body.geoms) scene.add_geom(b, g, g.held ? "equipment" : "player");
     }
   }
   describe_scene(scene);
