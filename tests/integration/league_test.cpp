@@ -29,7 +29,7 @@ struct TwoServers {
 // up.
 bool wait_for_games(const std::string& db, const std::string& name,
                     const std::function<bool(const std::vector<selfplay::Game>&)>& ready,
-                    double timeout_s = 20) {
+                    double timeout_s = 120) {  // patient: a loaded CI machine is slow
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   while (std::chrono::steady_clock::now() < deadline) {
     try {
