@@ -13,11 +13,13 @@ url="udpm://239.255.76.67:$((26000 + $$ % 9000))?ttl=0&recv_buf_size=4194304"
 server=$!
 trap 'kill $server 2>/dev/null; wait $server 2>/dev/null || true' EXIT
 mkdir -p docs/screenshots
-for sport in tennis table_tennis fencing boxing; do
+for sport in tennis table_tennis fencing boxing sandbox; do
+  policy=scripted
+  [ "$sport" = sandbox ] && policy=random   # no scripted player for the test sport
   pids=()
   for slot in 0 1; do
     "$bin/olympics-agent" --lcm-url "$url" --request-id "shot-$sport" --sport "$sport" \
-      --mode 1v1 --seed 3 --time-limit 8 --policy scripted --slots $slot --name "p$slot" \
+      --mode 1v1 --seed 3 --time-limit 8 --policy $policy --slots $slot --name "p$slot" \
       --json > "$work/$sport-$slot.json" &
     pids+=($!)
   done
