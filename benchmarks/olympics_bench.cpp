@@ -57,6 +57,13 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   rack->add_option("--seconds", racket.seconds, "wall seconds per speed measurement")
       ->check(CLI::PositiveNumber);
+  rack->add_option("--policies", racket.policies,
+                   "ball-return players: scripted, zero, random, mlp:FILE (comma-separated)")
+      ->delimiter(',');
+  rack->add_option("--sports", racket.sports, "tennis, table_tennis (comma-separated)")
+      ->delimiter(',');
+  bool no_speed = false;
+  rack->add_flag("--no-speed", no_speed, "skip the 1v1 ticks/s measurement");
   rack->add_option("--repeats", racket.repeats, "interleaved repeats (median reported)")
       ->check(CLI::PositiveNumber);
   olympics::bench::CombatBenchOptions combat;
@@ -127,6 +134,7 @@ int main(int argc, char** argv) {
       olympics::bench::print_server_report(report);
   }
   if (*rack) {
+    racket.speed = !no_speed;
     auto report = olympics::bench::run_racket_bench(racket);
     if (json)
       std::printf("%s\n", report.dump(2).c_str());

@@ -59,9 +59,9 @@ EpisodeStats ball_return(const std::string& sport, const std::string& policy_nam
 
 nlohmann::json run_racket_bench(const RacketBenchOptions& o) {
   nlohmann::json report = {{"episodes", o.episodes}, {"sports", nlohmann::json::object()}};
-  for (const std::string sport : {"tennis", "table_tennis"}) {
+  for (const std::string& sport : o.sports) {
     nlohmann::json& r = report["sports"][sport];
-    for (const std::string policy : {"scripted", "zero"}) {
+    for (const std::string& policy : o.policies) {
       const EpisodeStats st = ball_return(sport, policy, o.episodes);
       r["ball_return"][policy] = {{"episodes", st.episodes},
                                   {"balls", st.balls},
@@ -71,6 +71,7 @@ nlohmann::json run_racket_bench(const RacketBenchOptions& o) {
                                   {"falls", st.falls},
                                   {"touch_fraction", double(st.touched) / st.balls}};
     }
+    if (!o.speed) continue;
     core::ModelSpec players = core::load_humanoid(core::HumanoidKind::Smpl);
     sports::equipment::attach_equipment(players, sport == "tennis"
                                                      ? sports::racket::tennis_racket()
@@ -90,6 +91,7 @@ void print_racket_report(const nlohmann::json& report) {
           policy.c_str(), b["episodes"].get<int>(), b["balls"].get<int>(),
           b["balls_touched"].get<int>(), 100 * b["touch_fraction"].get<double>(),
           b["first_ball_touched"].get<int>(), b["returns_in"].get<int>(), b["falls"].get<int>());
+    if (!r.contains("speed_1v1")) continue;
     const auto& s = r["speed_1v1"];
     std::printf("  1v1 ticks/s on one core: match %.0f, bare physics %.0f, ratio %.2f\n",
                 s["match_ticks_per_s"].get<double>(), s["bare_physics_ticks_per_s"].get<double>(),

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 namespace olympics::bench {
 
@@ -11,6 +13,11 @@ struct RacketBenchOptions {
   int episodes = 100;  // ball-return episodes per sport and policy
   double seconds = 2;  // wall seconds per speed measurement
   int repeats = 3;     // interleaved repeats (median reported)
+  // Ball-return players: any olympics-agent policy (mlp:FILE measures a trained snapshot on
+  // seeds 1..episodes, which the trainer never plays: its seeds start at 10^6).
+  std::vector<std::string> policies = {"scripted", "zero"};
+  std::vector<std::string> sports = {"tennis", "table_tennis"};
+  bool speed = true;  // also the 1v1 ticks/s figure
 };
 
 nlohmann::json run_racket_bench(const RacketBenchOptions& options);

@@ -28,15 +28,35 @@ class RandomPolicy : public Policy {
   std::mt19937_64 rng_;
 };
 
+// A snapshot's MLP; with metadata residual = "scripted" (a residual policy, docs/training.md)
+// the action is the scripted baseline's plus the MLP's, clipped to [-1, 1] as in training.
 class SnapshotPolicy : public Policy {
  public:
-  explicit SnapshotPolicy(const std::string& path) : snapshot_(MlpSnapshot::load(path)) {}
+  explicit SnapshotPolicy(const std::string& path) : snapshot_(MlpSnapshot::load(path)) {
+    const auto it = snapshot_.metadata().find("residual");
+    const std::string residual = it == snapshot_.metadata().end() ? "" : it->second;
+    if (residual == "scripted")
+      base_ = std::make_unique<ScriptedPolicy>();
+    else if (!residual.empty() && residual != "none")
+      throw std::invalid_argument(path + ": residual \"" + residual +
+                                  "\" is not a base policy this player knows (scripted, none)");
+  }
+  void start(const MatchInfo& match) override {
+    if (base_) base_->start(match);
+  }
   void act(std::span<const float> observation, std::span<float> action) override {
     snapshot_.act(observation, action);
+    if (!base_) return;
+    base_action_.resize(action.size());
+    base_->act(observation, base_action_);
+    for (size_t i = 0; i < action.size(); ++i)
+      action[i] = std::clamp(action[i] + base_action_[i], -1.0f, 1.0f);
   }
 
  private:
   MlpSnapshot snapshot_;
+  std::unique_ptr<Policy> base_;
+  std::vector<float> base_action_;
 };
 
 }  // namespace

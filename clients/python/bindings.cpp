@@ -99,6 +99,7 @@ PYBIND11_MODULE(_client, m) {
   m.doc() = "SMPL Olympics match client (C++ MatchClient over LCM)";
   py::register_exception<MatchError>(m, "MatchError", PyExc_RuntimeError);
   olympics::python::bind_vector_client(m);
+  olympics::python::bind_native_policy(m);
 
   py::class_<MatchClient>(m, "MatchClient")
       .def(py::init([](const std::string& lcm_url, const std::string& agent_name,

@@ -17,5 +17,7 @@ olympics::client::ClientOptions client_options(const std::string& lcm_url,
                                                const std::string& secret_file);
 // smpl_olympics._client.VectorClient (vector_bindings.cpp).
 void bind_vector_client(pybind11::module_& m);
+// smpl_olympics._client.NativePolicy (policy_bindings.cpp).
+void bind_native_policy(pybind11::module_& m);
 
 }  // namespace olympics::python

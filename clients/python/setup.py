@@ -78,14 +78,20 @@ class BuildPy(build_py):
 
 cflags = pkg_config("--cflags")
 libs = pkg_config("--libs")
-sources = ([os.path.join(HERE, f) for f in ("bindings.cpp", "vector_bindings.cpp")] +
+sources = ([os.path.join(HERE, f) for f in ("bindings.cpp", "vector_bindings.cpp",
+                                           "policy_bindings.cpp")] +
            sorted(glob.glob(os.path.join(ROOT, "clients", "cpp", "*.cpp"))) +
+           # the policies olympics-agent plays (NativePolicy), without its programs' mains
+           sorted(f for f in glob.glob(os.path.join(ROOT, "clients", "agent", "*.cpp"))
+                  if os.path.basename(f) not in ("main.cpp", "snapshot_tool.cpp",
+                                                 "play_match.cpp")) +
            sorted(glob.glob(os.path.join(ROOT, "protocol", "*.cpp"))))
 extension = Extension(
     "smpl_olympics._client",
     sources=sources,  # absolute: objects then stay under build/
     include_dirs=[os.path.join(ROOT, d) for d in ("lcmtypes", "protocol", "clients/cpp",
-                                                  "clients/python")] + [pybind11_include()],
+                                                  "clients/agent", "clients/python")] +
+                 [pybind11_include(), "/usr/include/eigen3"],
     extra_compile_args=["-std=c++20", "-O2", "-fvisibility=hidden",
                         *[f for f in cflags if not f.startswith("-I")]],
     extra_link_args=libs + ["-lcrypto"],

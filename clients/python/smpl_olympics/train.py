@@ -1,0 +1,428 @@
+"""python3 -m smpl_olympics.train: PPO against a real server through the vector env.
+
+    python3 -m smpl_olympics.train --sport table_tennis --mode ball_return --spawn-server \\
+        --samples 2000000 --residual scripted --run runs/tt
+    python3 -m smpl_olympics.train --resume runs/tt --samples 4000000     # go on
+    python3 -m smpl_olympics.train --sport boxing --mode 1v1 --opponent frozen --init runs/solo
+
+Self-play: with no --opponent every slot of the match acts with the one shared policy (the
+paper's shared self-play); --opponent frozen plays team 0 against a frozen copy of the learner,
+refreshed every --swap-every iterations (alternating frozen copies); --opponent scripted|zero|
+random|mlp:FILE plays team 0 against that policy (run in process, the agent's own code).
+--residual scripted adds the policy's action to the scripted baseline's. Everything a run makes
+goes to its folder: checkpoint.pt (resume), snapshots/*.safetensors (olympics-agent --policy
+mlp:FILE and the league play them), metrics.csv and curves.png. docs/training.md.
+"""
+import argparse
+import copy
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+import numpy as np
+import torch
+
+from . import catalog
+from ._client import NativePolicy
+from .ppo import ActorCritic, PpoSettings, RunningNorm, gae, ppo_update
+from .snapshot import export_mlp
+from .training_log import TrainingLog
+from .vector_env import OlympicsVectorEnv
+
+# CPU-sized defaults, and the paper's Table 1 (PPO, lr 5e-4, minibatch 1024, MLP [2048, 1024,
+# 512], fixed sigma, gamma 0.99, clip 0.2), which wants a GPU-sized budget.
+PRESETS = {
+    "cpu": {"hidden": [256, 128], "lr": 3e-4, "minibatch": 512, "num_envs": 16, "horizon": 32},
+    "paper": {"hidden": [2048, 1024, 512], "lr": 5e-4, "minibatch": 1024, "num_envs": 64,
+              "horizon": 32},
+}
+
+
+def parse_args(argv=None):
+    p = argparse.ArgumentParser(prog="python3 -m smpl_olympics.train", description=__doc__,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--run", default="runs/latest", help="folder for everything the run makes")
+    p.add_argument("--resume", help="a run folder: go on from its checkpoint")
+    p.add_argument("--sport", default="sandbox")
+    p.add_argument("--mode", default="solo")
+    p.add_argument("--options", default="", help="the sport's settings, JSON")
+    p.add_argument("--time-limit", type=float, default=0.0, help="seconds per match (0: sport's)")
+    p.add_argument("--samples", type=int, default=1_000_000, help="agent-steps to train for")
+    p.add_argument("--preset", choices=sorted(PRESETS), default="cpu")
+    p.add_argument("--hidden", type=int, nargs="+", help="hidden layer sizes (preset's)")
+    p.add_argument("--num-envs", type=int, help="matches played at once (preset's)")
+    p.add_argument("--horizon", type=int, help="ticks per environment per iteration (preset's)")
+    p.add_argument("--lr", type=float, help="learning rate (preset's)")
+    p.add_argument("--minibatch", type=int, help="minibatch size (preset's)")
+    p.add_argument("--epochs", type=int, default=4)
+    p.add_argument("--gamma", type=float, default=0.99)
+    p.add_argument("--lam", type=float, default=0.95)
+    p.add_argument("--clip", type=float, default=0.2)
+    p.add_argument("--log-std", type=float, default=-1.6, help="exploration sigma = exp(this)")
+    p.add_argument("--learn-std", action="store_true", help="learn sigma (default: fixed)")
+    p.add_argument("--residual", choices=["none", "scripted"], default="none",
+                   help="act = base policy's action + the network's")
+    p.add_argument("--opponent", default="",
+                   help="team 1's policy: frozen, scripted, zero, random, mlp:FILE "
+                        "(none: every slot plays the shared policy)")
+    p.add_argument("--swap-every", type=int, default=10, help="--opponent frozen: refresh period")
+    p.add_argument("--init", help="warm start from a run folder (blocks matched by name)")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--lcm-url", default="", help="the server's LCM URL (default LCM's)")
+    p.add_argument("--secret", default="", help="the deployment's secret file")
+    p.add_argument("--spawn-server", action="store_true",
+                   help="start a private olympics-server for this run (results in the run folder)")
+    p.add_argument("--snapshot-every", type=int, default=20, help="iterations between snapshots")
+    p.add_argument("--quiet", action="store_true", help="no progress line")
+    p.add_argument("--torch-threads", type=int, default=1,
+                   help="PyTorch's threads (1: the server's workers keep the other cores)")
+    args = p.parse_args(argv)
+    for key, value in PRESETS[args.preset].items():
+        if getattr(args, key) is None:
+            setattr(args, key, value)
+    return args
+
+
+def find_program(name):
+    for candidate in (os.environ.get("OLYMPICS_" + name.split("-")[1].upper()),
+                      os.path.join(os.environ.get("OLYMPICS_BIN_DIR", ""), name),
+                      shutil.which(name), os.path.join("build", "bin", name)):
+        if candidate and os.access(candidate, os.X_OK):
+            return candidate
+    sys.exit(f"{name} not found: build the project (bash deploy/build.sh), put it on PATH or "
+             f"set OLYMPICS_BIN_DIR")
+
+
+def spawn_server(run_dir):
+    url = f"udpm://239.255.76.67:{20000 + os.getpid() % 20000}?ttl=0&recv_buf_size=4194304"
+    log = open(os.path.join(run_dir, "server.log"), "a")
+    server = subprocess.Popen(
+        [find_program("olympics-server"), "serve", "--lcm-url", url, "--id", f"train{os.getpid()}",
+         "--results", os.path.join(run_dir, "results.db"), "--capacity", "1024",
+         "--silent-timeout-s", "600", "--action-deadline-ms", "600000", "--max-missed-ticks",
+         "100000"], stdout=log, stderr=subprocess.STDOUT)
+    give_up = time.monotonic() + 60
+    while time.monotonic() < give_up:
+        with open(log.name) as f:
+            if "olympics-server" in f.read():
+                return server, url
+        if server.poll() is not None:
+            break
+        time.sleep(0.05)
+    sys.exit(f"the olympics-server for this run did not start; see {log.name}")
+
+
+class Trainer:
+    """`spec`: the mode's catalog entry (default: from the catalog; tests pass their own)."""
+
+    def __init__(self, args, spec=None):
+        self.args = args
+        self.run_dir = args.run
+        os.makedirs(os.path.join(self.run_dir, "snapshots"), exist_ok=True)
+        spec = spec or catalog.mode(args.sport, args.mode)
+        self.spec = spec
+        self.teams = spec["slot_teams"]
+        self.shared = not args.opponent
+        self.learning = [s for s in range(len(self.teams)) if self.shared or self.teams[s] == 0]
+        self.others = [s for s in range(len(self.teams)) if s not in self.learning]
+        self.obs_size, self.action_size = spec["obs_size"], spec["action_size"]
+        self.term_names = [t["name"] for t in spec["rewards"]]
+        torch.set_num_threads(args.torch_threads)
+        torch.manual_seed(args.seed)
+        self.generator = torch.Generator().manual_seed(args.seed)
+        self.rng = np.random.default_rng(args.seed)
+        self.model = ActorCritic(self.obs_size, self.action_size, args.hidden, args.log_std,
+                                 args.learn_std)
+        self.optimizer = torch.optim.Adam([p for p in self.model.parameters() if p.requires_grad],
+                                          lr=args.lr)
+        self.norm = RunningNorm(self.obs_size)
+        self.iteration, self.samples, self.wall = 0, 0, 0.0
+        self.frozen = None  # (model, norm) of --opponent frozen
+        self.ppo = PpoSettings(lr=args.lr, epochs=args.epochs, minibatch=args.minibatch,
+                               clip=args.clip)
+
+    # ---------------------------------------------------------------- policies in process
+    def native(self, name, seed):
+        blocks = self.spec["observation"]
+        return NativePolicy(name, self.args.sport, self.args.mode, [b["name"] for b in blocks],
+                            [b["size"] for b in blocks], self.action_size, 30.0, seed)
+
+    def make_helpers(self, num_envs):
+        base = (lambda e, s: self.native("scripted", e * 100 + s)) if self.args.residual != "none" \
+            else (lambda e, s: None)
+        self.base = [[base(e, s) for s in self.learning] for e in range(num_envs)]
+        opp = self.args.opponent
+        native_opp = opp and opp != "frozen"
+        self.opponents = [[self.native(opp, e * 100 + s) if native_opp else None
+                           for s in self.others] for e in range(num_envs)]
+        if opp == "frozen" and self.frozen is None:
+            self.refresh_frozen()
+
+    def refresh_frozen(self):
+        self.frozen = (copy.deepcopy(self.model).eval(), copy.deepcopy(self.norm))
+
+    def restart_helpers(self, e):
+        for p in self.base[e] + self.opponents[e]:
+            if p is not None:
+                p.restart()
+
+    def base_actions(self, raw_obs):
+        """[envs, learning, action] from the base policy (zeros without --residual)."""
+        out = np.zeros((raw_obs.shape[0], len(self.learning), self.action_size), np.float32)
+        if self.args.residual != "none":
+            for e in range(raw_obs.shape[0]):
+                for i, s in enumerate(self.learning):
+                    out[e, i] = self.base[e][i].act(raw_obs[e, s])
+        return out
+
+    def opponent_actions(self, raw_obs):
+        out = np.zeros((raw_obs.shape[0], len(self.others), self.action_size), np.float32)
+        if not self.others:
+            return out
+        if self.args.opponent == "frozen":
+            model, norm = self.frozen
+            obs = torch.as_tensor(norm.normalise(raw_obs[:, self.others]))
+            return model.mean_action(obs).numpy()
+        for e in range(raw_obs.shape[0]):
+            for i, s in enumerate(self.others):
+                out[e, i] = self.opponents[e][i].act(raw_obs[e, s])
+        return out
+
+    # ---------------------------------------------------------------- the loop
+    def make_env(self):
+        a = self.args
+        # Training seeds start at 10^6 (olympics-bench evaluates on seeds 1..N); a resumed run
+        # moves on to seeds it has not played.
+        seed = 10**6 * (1 + a.seed) + self.iteration * a.num_envs * 7919
+        return OlympicsVectorEnv(a.num_envs, sport=a.sport, mode=a.mode, seed=seed,
+                                 time_limit_s=a.time_limit,
+                                 sport_options=json.loads(a.options) if a.options else None,
+                                 lcm_url=a.lcm_url, secret_file=a.secret,
+                                 agent_name=os.path.basename(os.path.normpath(self.run_dir)),
+                                 policy_id="ppo", request_prefix=f"train{os.getpid()}")
+
+    def train(self, make_env=None):
+        """Trains until args.samples; `make_env` (tests) replaces the server's vector env."""
+        a = self.args
+        server = None
+        if a.spawn_server:
+            server, a.lcm_url = spawn_server(self.run_dir)
+        log = TrainingLog(self.run_dir, self.term_names, resume=self.iteration > 0)
+        env = (make_env or self.make_env)()
+        self.make_helpers(a.num_envs)
+        try:
+            raw, _ = env.reset()
+            ep = Episodes(a.num_envs, len(self.learning), len(self.term_names))
+            while self.samples < a.samples:
+                started = time.monotonic()
+                batch, raw = self.collect(env, raw, ep)
+                stats = ppo_update(self.model, self.optimizer, batch, self.ppo, self.generator)
+                self.iteration += 1
+                self.samples += len(batch["obs"])
+                self.wall += time.monotonic() - started
+                if a.opponent == "frozen" and self.iteration % a.swap_every == 0:
+                    self.refresh_frozen()
+                row = {"iteration": self.iteration, "samples": self.samples,
+                       "wall_s": round(self.wall, 2),
+                       "samples_per_s": len(batch["obs"]) / (time.monotonic() - started),
+                       "std": float(self.model.log_std.exp().mean()), **stats,
+                       **ep.summary(self.term_names), **self.scores(env)}
+                log.write(row)
+                if not a.quiet:
+                    TrainingLog.progress(row, a.samples)
+                if self.iteration % a.snapshot_every == 0:
+                    self.save()
+            self.save()
+            self.plot(log)
+            if not a.quiet:
+                print(f"\n{self.run_dir}: {self.samples:,} samples in {self.wall:.0f} s; latest "
+                      f"snapshot {self.snapshot_path('latest')}")
+        finally:
+            env.close()
+            if server is not None:
+                server.terminate()
+                server.wait(timeout=30)
+
+    def plot(self, log):
+        a = self.args
+        try:
+            log.plot(os.path.join(self.run_dir, "curves.png"),
+                     f"{a.sport} {a.mode}: PPO{' residual on scripted' if a.residual != 'none' else ''}"
+                     f", {self.samples:,} samples, {self.wall / 60:.1f} min")
+        except ImportError:
+            print("no curves.png: matplotlib is not installed (apt-get install python3-matplotlib)")
+
+    def collect(self, env, raw, ep):
+        a, L = self.args, len(self.learning)
+        T, N = a.horizon, a.num_envs
+        buf = {k: [] for k in ("obs", "actions", "log_probs", "values", "rewards", "dones")}
+        for _ in range(T):
+            obs = self.norm.normalise(raw[:, self.learning])  # [N, L, obs]
+            act, logp, value = self.model.act(torch.as_tensor(obs))
+            act = act.numpy()
+            actions = np.zeros((N, len(self.teams), self.action_size), np.float32)
+            actions[:, self.learning] = np.clip(act + self.base_actions(raw), -1, 1)
+            if self.others:
+                actions[:, self.others] = np.clip(self.opponent_actions(raw), -1, 1)
+            next_raw, rewards, _, truncated, infos = env.step(actions)
+            r = rewards[:, self.learning].astype(np.float32)
+            done = np.repeat(np.asarray(infos["episode_over"], np.float32)[:, None], L, axis=1)
+            for e in np.nonzero(infos["episode_over"])[0]:
+                # A match cut by the time limit is not an end: bootstrap from its last state.
+                for i, s in enumerate(self.learning):
+                    if truncated[e, s]:
+                        final = self.norm.normalise(infos["final_observation"][e, s])
+                        with torch.no_grad():
+                            r[e, i] += a.gamma * float(self.model.value(torch.as_tensor(final)))
+                self.restart_helpers(e)
+            ep.add(rewards[:, self.learning], infos["reward_terms"][:, self.learning],
+                   infos["episode_over"])
+            buf["obs"].append(obs)
+            buf["actions"].append(act)
+            buf["log_probs"].append(logp.numpy())
+            buf["values"].append(value.numpy())
+            buf["rewards"].append(r)
+            buf["dones"].append(done)
+            self.norm.update(raw[:, self.learning])
+            raw = next_raw
+        with torch.no_grad():
+            last = self.model.value(torch.as_tensor(self.norm.normalise(raw[:, self.learning])))
+        last = last.numpy()
+        arr = {k: np.asarray(v, np.float32) for k, v in buf.items()}
+        adv, ret = gae(arr["rewards"], arr["values"], arr["dones"], last, a.gamma, a.lam)
+        flat = lambda x, *tail: x.reshape(-1, *tail)  # noqa: E731
+        return {"obs": flat(arr["obs"], self.obs_size), "actions": flat(arr["actions"], self.action_size),
+                "log_probs": flat(arr["log_probs"]), "advantages": flat(adv),
+                "returns": flat(ret)}, raw
+
+    def scores(self, env):
+        """The sport's own figure from the matches that ended: the learning team's score (ball
+        return: balls returned in; a match: points), and its win rate against an opponent."""
+        results = env.results()
+        if not results:
+            return {}
+        if self.shared:
+            return {"score": float(np.mean([np.mean(r["scores"]) for r in results]))}
+        return {"score": float(np.mean([r["scores"][0] for r in results])),
+                "win_rate": float(np.mean([r["winner_team"] == 0 for r in results]))}
+
+    # ---------------------------------------------------------------- files
+    def snapshot_path(self, tag):
+        return os.path.join(self.run_dir, "snapshots", f"policy-{tag}.safetensors")
+
+    def save(self):
+        torch.save({"model": self.model.state_dict(), "optimizer": self.optimizer.state_dict(),
+                    "norm": self.norm.state_dict(), "iteration": self.iteration,
+                    "samples": self.samples, "wall": self.wall, "args": vars(self.args),
+                    "generator": self.generator.get_state(), "torch_rng": torch.get_rng_state(),
+                    "frozen": None if self.frozen is None else
+                    (self.frozen[0].state_dict(), self.frozen[1].state_dict())},
+                   os.path.join(self.run_dir, "checkpoint.pt"))
+        path = self.snapshot_path(f"{self.iteration:05d}")
+        export_mlp(self.model.actor, path, activation="silu", obs_mean=self.norm.mean,
+                   obs_std=self.norm.std(), policy_id=os.path.basename(os.path.normpath(self.run_dir)),
+                   policy_version=str(self.iteration), sport=self.args.sport, mode=self.args.mode,
+                   residual=self.args.residual, samples=str(self.samples))
+        shutil.copyfile(path, self.snapshot_path("latest"))
+
+    def load(self, run_dir):
+        state = torch.load(os.path.join(run_dir, "checkpoint.pt"), weights_only=False)
+        self.model.load_state_dict(state["model"])
+        self.optimizer.load_state_dict(state["optimizer"])
+        self.norm.load_state_dict(state["norm"])
+        self.iteration, self.samples, self.wall = state["iteration"], state["samples"], state["wall"]
+        self.generator.set_state(state["generator"])
+        torch.set_rng_state(state["torch_rng"])
+        if state["frozen"] is not None:
+            model, norm = copy.deepcopy(self.model), RunningNorm(self.obs_size)
+            model.load_state_dict(state["frozen"][0])
+            norm.load_state_dict(state["frozen"][1])
+            self.frozen = (model.eval(), norm)
+
+    def warm_start(self, run_dir):
+        """Weights of another run (another mode of the sport, e.g. the single-player task): the
+        first layers' columns are matched by observation block name, the rest copied."""
+        state = torch.load(os.path.join(run_dir, "checkpoint.pt"), weights_only=False)
+        src_args = state["args"]
+        src = catalog.mode(src_args["sport"], src_args["mode"])["observation"]
+        dst = self.spec["observation"]
+        offsets = lambda blocks: {b["name"]: (sum(x["size"] for x in blocks[:i]), b["size"])  # noqa: E731
+                                  for i, b in enumerate(blocks)}
+        so, do = offsets(src), offsets(dst)
+        pairs = [(so[n][0], do[n][0], do[n][1]) for n in do if n in so and so[n][1] == do[n][1]]
+        mine = self.model.state_dict()
+        for key, value in state["model"].items():
+            if key in ("actor.0.weight", "critic.0.weight"):
+                w = torch.zeros_like(mine[key])
+                for s0, d0, n in pairs:
+                    w[:, d0:d0 + n] = value[:, s0:s0 + n]
+                mine[key] = w
+            elif mine[key].shape == value.shape:
+                mine[key] = value
+        self.model.load_state_dict(mine)
+        mean, var = np.zeros(self.obs_size), np.ones(self.obs_size)
+        for s0, d0, n in pairs:
+            mean[d0:d0 + n] = state["norm"]["mean"][s0:s0 + n]
+            var[d0:d0 + n] = state["norm"]["var"][s0:s0 + n]
+        self.norm.load_state_dict({"mean": mean, "var": var, "count": state["norm"]["count"]})
+        return [n for n in do if n in so]
+
+
+class Episodes:
+    """Per (environment, learning agent): the running return, length and reward-term sums;
+    what finished in an iteration is averaged into its row."""
+
+    def __init__(self, num_envs, agents, terms):
+        self.ret = np.zeros((num_envs, agents))
+        self.len = np.zeros((num_envs, agents))
+        self.terms = np.zeros((num_envs, agents, terms))
+        self.done_ret, self.done_len, self.done_terms = [], [], []
+
+    def add(self, rewards, terms, over):
+        self.ret += rewards
+        self.len += 1
+        self.terms += terms
+        for e in np.nonzero(over)[0]:
+            self.done_ret.extend(self.ret[e])
+            self.done_len.extend(self.len[e])
+            self.done_terms.extend(self.terms[e])
+            self.ret[e], self.len[e], self.terms[e] = 0, 0, 0
+
+    def summary(self, names):
+        if not self.done_ret:
+            return {"episodes": 0}
+        out = {"episodes": len(self.done_ret), "episode_return": float(np.mean(self.done_ret)),
+               "episode_length": float(np.mean(self.done_len))}
+        for k, n in enumerate(names):
+            out[f"term_{n}"] = float(np.mean([t[k] for t in self.done_terms]))
+        if "contact" in names:  # racket sports: the share of episodes that touched the ball
+            k = names.index("contact")
+            out["touch_rate"] = float(np.mean([t[k] > 0 for t in self.done_terms]))
+        self.done_ret, self.done_len, self.done_terms = [], [], []
+        return out
+
+
+def main(argv=None):
+    args = parse_args(argv)
+    if args.resume:
+        stored = torch.load(os.path.join(args.resume, "checkpoint.pt"), weights_only=False)["args"]
+        keep = {k: getattr(args, k) for k in ("samples", "lcm_url", "secret", "spawn_server",
+                                               "quiet")}
+        args = argparse.Namespace(**{**stored, **keep, "run": args.resume, "resume": args.resume})
+    trainer = Trainer(args)
+    if args.resume:
+        trainer.load(args.resume)
+        print(f"resuming {args.resume} at iteration {trainer.iteration}, "
+              f"{trainer.samples:,} samples")
+    elif args.init:
+        print(f"warm start from {args.init}: blocks {', '.join(trainer.warm_start(args.init))}")
+    with open(os.path.join(args.run, "args.json"), "w") as f:
+        json.dump(vars(args), f, indent=1)
+    trainer.train()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,74 @@
+"""What a training run writes: metrics.csv (one row per iteration) and curves.png, and the
+progress line on the terminal."""
+import csv
+import os
+import sys
+
+
+def read_metrics(run_dir):
+    """A run's metrics.csv as a list of dicts (strings, "" where a figure had no value)."""
+    with open(os.path.join(run_dir, "metrics.csv")) as f:
+        return list(csv.DictReader(f))
+
+
+class TrainingLog:
+    def __init__(self, run_dir, term_names, resume=False):
+        self.path = os.path.join(run_dir, "metrics.csv")
+        self.fields = (["iteration", "samples", "wall_s", "samples_per_s", "episodes",
+                        "episode_return", "episode_length", "score", "win_rate", "touch_rate"] +
+                       [f"term_{n}" for n in term_names] +
+                       ["policy_loss", "value_loss", "approx_kl", "std"])
+        if not (resume and os.path.exists(self.path)):
+            with open(self.path, "w", newline="") as f:
+                csv.writer(f).writerow(self.fields)
+
+    def write(self, row):
+        with open(self.path, "a", newline="") as f:
+            csv.writer(f).writerow([row.get(k, "") for k in self.fields])
+
+    def rows(self):
+        return read_metrics(os.path.dirname(self.path))
+
+    @staticmethod
+    def progress(row, total_samples):
+        done = min(1.0, row["samples"] / total_samples)
+        bar = "#" * int(30 * done) + "-" * (30 - int(30 * done))
+        ret, score = row.get("episode_return"), row.get("score")
+        ret_text = "-" if ret is None else f"{ret:8.2f}"
+        score_text = "-" if score is None else f"{score:.3f}"
+        sys.stdout.write(
+            f"\r[{bar}] {row['samples']:>10,d}/{total_samples:,d} samples "
+            f"{row['samples_per_s']:7.0f}/s  iter {row['iteration']:4d}  return {ret_text}  "
+            f"score {score_text}   ")
+        sys.stdout.flush()
+
+    def plot(self, out_png, title):
+        """Return, episode length, the sport's score and each reward term over samples."""
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        rows = self.rows()
+        if not rows:
+            return None
+        x = [float(r["samples"]) for r in rows]
+        series = ["episode_return", "episode_length", "score", "win_rate", "touch_rate"] + [
+            f for f in self.fields if f.startswith("term_")]
+        cols = 3
+        nrows = (len(series) + cols - 1) // cols
+        fig, axes = plt.subplots(nrows, cols, figsize=(4.2 * cols, 2.8 * nrows), squeeze=False)
+        for ax, name in zip(axes.flat, series):
+            pts = [(xi, float(r[name])) for xi, r in zip(x, rows) if r[name] not in ("", None)]
+            if pts:
+                ax.plot(*zip(*pts), lw=1.2)
+            ax.set_title(name.replace("term_", "reward term: "), fontsize=9)
+            ax.set_xlabel("samples", fontsize=8)
+            ax.tick_params(labelsize=7)
+            ax.grid(alpha=0.3)
+        for ax in list(axes.flat)[len(series):]:
+            ax.axis("off")
+        fig.suptitle(title, fontsize=10)
+        fig.tight_layout()
+        fig.savefig(out_png, dpi=90)
+        plt.close(fig)
+        return out_png

@@ -1,0 +1,166 @@
+"""The reference trainer (smpl_olympics.train): PPO improves the return on a trivial task; its
+snapshots act in the C++ MLP player exactly as in PyTorch (a residual one on top of the very
+scripted baseline); a resumed run goes on where it stopped; a short run against a real server
+leaves its checkpoint, snapshots, metrics and curves, and its snapshot plays a match."""
+import json
+import os
+import subprocess
+import tempfile
+import unittest
+
+import numpy as np
+import torch
+
+from server_process import BIN
+from smpl_olympics import train
+from smpl_olympics._client import NativePolicy
+from smpl_olympics.ppo import ActorCritic, RunningNorm
+from smpl_olympics.training_log import read_metrics
+
+
+class ToyVectorEnv:
+    """A trivial task with the vector env's interface: the best action is a fixed linear map of
+    the observation (clipped), reward 1 - mean squared error, 16-tick episodes."""
+    OBS, ACT, LENGTH = 8, 4, 16
+
+    def __init__(self, num_envs, seed=0):
+        self.n, self.rng = num_envs, np.random.default_rng(seed)
+        self.w = np.random.default_rng(42).normal(0, 0.4, (self.ACT, self.OBS)).astype(np.float32)
+        self.t = np.zeros(num_envs, int)
+
+    def _obs(self):
+        self.o = self.rng.normal(0, 1, (self.n, 1, self.OBS)).astype(np.float32)
+        return self.o
+
+    def reset(self):
+        return self._obs(), {}
+
+    def step(self, actions):
+        target = np.clip(self.o @ self.w.T, -1, 1)
+        reward = 1 - ((actions - target) ** 2).mean(-1)
+        self.t += 1
+        over = self.t >= self.LENGTH
+        self.t[over] = 0
+        final = self.o.copy()
+        infos = {"episode_over": over, "reward_terms": reward[..., None],
+                 "final_observation": final}
+        return self._obs(), reward, over[:, None], over[:, None], infos
+
+    def results(self):
+        return []
+
+    def close(self):
+        pass
+
+
+TOY_SPEC = {"slot_teams": [0], "obs_size": ToyVectorEnv.OBS, "action_size": ToyVectorEnv.ACT,
+            "observation": [{"name": "x", "size": ToyVectorEnv.OBS}],
+            "rewards": [{"name": "match"}]}
+
+
+def run_args(run, *extra):
+    return train.parse_args(["--run", run, "--quiet", *extra])
+
+
+class TrainTest(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.mkdtemp(prefix="olympics-train-")
+
+    def test_ppo_improves_the_return_on_a_trivial_task(self):
+        args = run_args(os.path.join(self.dir, "toy"), "--samples", "40000", "--num-envs", "16",
+                        "--horizon", "32", "--hidden", "64", "64", "--lr", "1e-3",
+                        "--learn-std", "--log-std", "-1")
+        trainer = train.Trainer(args, spec=TOY_SPEC)
+        trainer.train(make_env=lambda: ToyVectorEnv(args.num_envs))
+        rows = [r for r in read_metrics(args.run) if r["episode_return"]]
+        first = np.mean([float(r["episode_return"]) for r in rows[:5]])
+        last = np.mean([float(r["episode_return"]) for r in rows[-5:]])
+        # A random guess scores about 16 * (1 - 0.6); the map is learnable to nearly 16.
+        self.assertGreater(last, first + 2.0, f"return {first:.2f} -> {last:.2f}")
+
+    def test_resume_goes_on_where_the_run_stopped(self):
+        run = os.path.join(self.dir, "resume")
+        args = run_args(run, "--samples", "1024", "--num-envs", "4", "--horizon", "64",
+                        "--hidden", "32", "--sport", "sandbox", "--mode", "solo")
+        first = train.Trainer(args, spec=TOY_SPEC)
+        first.train(make_env=lambda: ToyVectorEnv(4))
+        saved = torch.load(os.path.join(run, "checkpoint.pt"), weights_only=False)
+        self.assertEqual((saved["iteration"], saved["samples"]), (4, 1024))
+        again = train.Trainer(args, spec=TOY_SPEC)
+        again.load(run)
+        for k, v in first.model.state_dict().items():
+            self.assertTrue(torch.equal(v, again.model.state_dict()[k]), k)
+        np.testing.assert_array_equal(again.norm.mean, first.norm.mean)
+        again.args.samples = 2048
+        again.train(make_env=lambda: ToyVectorEnv(4))
+        rows = read_metrics(run)
+        self.assertEqual([int(r["iteration"]) for r in rows], list(range(1, 9)))
+        self.assertEqual(int(rows[-1]["samples"]), 2048)
+        self.assertGreater(float(rows[-1]["wall_s"]), float(rows[3]["wall_s"]))
+
+    def test_a_short_run_against_the_server_plays_in_the_cpp_player_with_equal_actions(self):
+        run = os.path.join(self.dir, "tt")
+        env = dict(os.environ, OLYMPICS_BIN_DIR=BIN)
+        out = subprocess.run(
+            ["/usr/bin/python3", "-m", "smpl_olympics.train", "--run", run, "--sport",
+             "table_tennis", "--mode", "ball_return", "--spawn-server", "--samples", "1024",
+             "--num-envs", "4", "--horizon", "64", "--hidden", "32", "--residual", "scripted",
+             "--snapshot-every", "1", "--quiet"],
+            env=env, capture_output=True, text=True, timeout=600)
+        self.assertEqual(out.returncode, 0, out.stdout + out.stderr)
+        for f in ("checkpoint.pt", "metrics.csv", "curves.png", "args.json",
+                  "snapshots/policy-latest.safetensors", "snapshots/policy-00004.safetensors"):
+            self.assertTrue(os.path.exists(os.path.join(run, f)), f)
+        rows = read_metrics(run)
+        self.assertEqual(len(rows), 4)
+        self.assertGreater(sum(int(r["episodes"]) for r in rows), 0, "episodes ended and counted")
+
+        # The snapshot in C++ (olympics-snapshot: the MLP alone) against PyTorch's mean action.
+        state = torch.load(os.path.join(run, "checkpoint.pt"), weights_only=False)
+        spec = train.catalog.mode("table_tennis", "ball_return")
+        model = ActorCritic(spec["obs_size"], spec["action_size"], [32])
+        model.load_state_dict(state["model"])
+        norm = RunningNorm(spec["obs_size"])
+        norm.load_state_dict(state["norm"])
+        obs = np.random.default_rng(3).normal(0, 1, (5, spec["obs_size"])).astype(np.float32)
+        obs = obs * norm.std().astype(np.float32) + norm.mean.astype(np.float32)
+        want = model.mean_action(torch.as_tensor(norm.normalise(obs))).numpy()
+        snapshot = os.path.join(run, "snapshots", "policy-latest.safetensors")
+        evaluated = subprocess.run([f"{BIN}/olympics-snapshot", "eval", snapshot],
+                                   input="\n".join(" ".join(map(repr, map(float, o))) for o in obs),
+                                   capture_output=True, text=True, check=True).stdout
+        got = np.array([[float(x) for x in line.split()] for line in evaluated.strip().splitlines()])
+        np.testing.assert_allclose(got, want, atol=1e-4)
+
+        # Residual: the C++ player adds the same scripted baseline the trainer added.
+        blocks = spec["observation"]
+        native = lambda name: NativePolicy(name, "table_tennis", "ball_return",  # noqa: E731
+                                           [b["name"] for b in blocks], [b["size"] for b in blocks],
+                                           spec["action_size"])
+        player, scripted = native("mlp:" + snapshot), native("scripted")
+        for o, w in zip(obs, want):
+            np.testing.assert_allclose(player.act(o), np.clip(w + scripted.act(o), -1, 1),
+                                       atol=1e-4)
+
+        # And it plays a match through olympics-agent, as the league would.
+        server = subprocess.Popen([f"{BIN}/olympics-server", "serve", "--lcm-url", URL, "--id",
+                                   "trained", "--results", os.path.join(self.dir, "r.db")],
+                                  stdout=subprocess.DEVNULL, stderr=subprocess.STDOUT)
+        try:
+            agent = subprocess.run(
+                [f"{BIN}/olympics-agent", "--lcm-url", URL, "--sport", "table_tennis", "--mode",
+                 "ball_return", "--request-id", "trained", "--policy", "mlp:" + snapshot,
+                 "--time-limit", "10", "--json", "--timeout", "60"],
+                capture_output=True, text=True, timeout=120)
+            self.assertEqual(agent.returncode, 0, agent.stdout + agent.stderr)
+            self.assertEqual(json.loads(agent.stdout.strip().splitlines()[-1])["mode"],
+                             "ball_return")
+        finally:
+            server.terminate()
+            server.wait(timeout=30)
+
+
+URL = f"udpm://239.255.76.67:{25000 + os.getpid() % 9000}?ttl=0&recv_buf_size=4194304"
+
+if __name__ == "__main__":
+    unittest.main()
