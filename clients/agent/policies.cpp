@@ -29,7 +29,8 @@ class RandomPolicy : public Policy {
 };
 
 // A snapshot's MLP; with metadata residual = "scripted" (a residual policy, docs/training.md)
-// the action is the scripted baseline's plus the MLP's, clipped to [-1, 1] as in training.
+// the action is the scripted baseline's plus the MLP's clipped to [-1, 1], as in training (the
+// baseline's own targets may lie beyond +-1 and are kept).
 class SnapshotPolicy : public Policy {
  public:
   explicit SnapshotPolicy(const std::string& path) : snapshot_(MlpSnapshot::load(path)) {
@@ -50,7 +51,7 @@ class SnapshotPolicy : public Policy {
     base_action_.resize(action.size());
     base_->act(observation, base_action_);
     for (size_t i = 0; i < action.size(); ++i)
-      action[i] = std::clamp(action[i] + base_action_[i], -1.0f, 1.0f);
+      action[i] = std::clamp(action[i], -1.0f, 1.0f) + base_action_[i];
   }
 
  private:

@@ -78,6 +78,18 @@ class TrainTest(unittest.TestCase):
         # A random guess scores about 16 * (1 - 0.6); the map is learnable to nearly 16.
         self.assertGreater(last, first + 2.0, f"return {first:.2f} -> {last:.2f}")
 
+    def test_episode_figures_are_each_episodes_own_sums(self):
+        ep = train.Episodes(2, 1, 2)
+        ep.add(np.array([[1.0], [2.0]]), np.array([[[1, 0]], [[0, 3]]]), np.array([False, True]))
+        ep.add(np.array([[4.0], [8.0]]), np.array([[[0, 0]], [[5, 5]]]), np.array([True, False]))
+        s = ep.summary(["racket", "contact"])
+        self.assertEqual(s["episodes"], 2)
+        self.assertEqual(s["episode_return"], (2.0 + 5.0) / 2)
+        self.assertEqual(s["episode_length"], (1 + 2) / 2)
+        self.assertEqual((s["term_racket"], s["term_contact"]), (0.5, 1.5))
+        self.assertEqual(s["touch_rate"], 0.5)  # the first ended episode touched, the second not
+        self.assertEqual(ep.summary(["racket", "contact"]), {"episodes": 0})
+
     def test_resume_goes_on_where_the_run_stopped(self):
         run = os.path.join(self.dir, "resume")
         args = run_args(run, "--samples", "1024", "--num-envs", "4", "--horizon", "64",
@@ -139,7 +151,7 @@ class TrainTest(unittest.TestCase):
                                            spec["action_size"])
         player, scripted = native("mlp:" + snapshot), native("scripted")
         for o, w in zip(obs, want):
-            np.testing.assert_allclose(player.act(o), np.clip(w + scripted.act(o), -1, 1),
+            np.testing.assert_allclose(player.act(o), np.clip(w, -1, 1) + scripted.act(o),
                                        atol=1e-4)
 
         # And it plays a match through olympics-agent, as the league would.

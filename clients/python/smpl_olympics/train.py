@@ -9,7 +9,7 @@ Self-play: with no --opponent every slot of the match acts with the one shared p
 paper's shared self-play); --opponent frozen plays team 0 against a frozen copy of the learner,
 refreshed every --swap-every iterations (alternating frozen copies); --opponent scripted|zero|
 random|mlp:FILE plays team 0 against that policy (run in process, the agent's own code).
---residual scripted adds the policy's action to the scripted baseline's. Everything a run makes
+--residual scripted adds the policy's action (clipped to [-1, 1]) to the scripted baseline's. Everything a run makes
 goes to its folder: checkpoint.pt (resume), snapshots/*.safetensors (olympics-agent --policy
 mlp:FILE and the league play them), metrics.csv and curves.png. docs/training.md.
 """
@@ -185,7 +185,7 @@ class Trainer:
         if self.args.opponent == "frozen":
             model, norm = self.frozen
             obs = torch.as_tensor(norm.normalise(raw_obs[:, self.others]))
-            return model.mean_action(obs).numpy()
+            return np.clip(model.mean_action(obs).numpy(), -1, 1)
         for e in range(raw_obs.shape[0]):
             for i, s in enumerate(self.others):
                 out[e, i] = self.opponents[e][i].act(raw_obs[e, s])
@@ -264,9 +264,11 @@ class Trainer:
             act, logp, value = self.model.act(torch.as_tensor(obs))
             act = act.numpy()
             actions = np.zeros((N, len(self.teams), self.action_size), np.float32)
-            actions[:, self.learning] = np.clip(act + self.base_actions(raw), -1, 1)
+            # The network's part is clipped to the action space; a base or an opponent policy's
+            # is sent as it is (the scripted players use joint targets beyond +-1).
+            actions[:, self.learning] = np.clip(act, -1, 1) + self.base_actions(raw)
             if self.others:
-                actions[:, self.others] = np.clip(self.opponent_actions(raw), -1, 1)
+                actions[:, self.others] = self.opponent_actions(raw)
             next_raw, rewards, _, truncated, infos = env.step(actions)
             r = rewards[:, self.learning].astype(np.float32)
             done = np.repeat(np.asarray(infos["episode_over"], np.float32)[:, None], L, axis=1)
@@ -386,9 +388,10 @@ class Episodes:
         self.len += 1
         self.terms += terms
         for e in np.nonzero(over)[0]:
-            self.done_ret.extend(self.ret[e])
-            self.done_len.extend(self.len[e])
-            self.done_terms.extend(self.terms[e])
+            # Copies: the rows are zeroed for the next episode right after.
+            self.done_ret.extend(self.ret[e].tolist())
+            self.done_len.extend(self.len[e].tolist())
+            self.done_terms.extend(self.terms[e].copy())
             self.ret[e], self.len[e], self.terms[e] = 0, 0, 0
 
     def summary(self, names):
