@@ -23,13 +23,13 @@ class ToyVectorEnv:
     the observation (clipped), reward 1 - mean squared error, 16-tick episodes."""
     OBS, ACT, LENGTH = 8, 4, 16
 
-    def __init__(self, num_envs, seed=0):
-        self.n, self.rng = num_envs, np.random.default_rng(seed)
+    def __init__(self, num_envs, seed=0, agents=1):
+        self.n, self.agents, self.rng = num_envs, agents, np.random.default_rng(seed)
         self.w = np.random.default_rng(42).normal(0, 0.4, (self.ACT, self.OBS)).astype(np.float32)
         self.t = np.zeros(num_envs, int)
 
     def _obs(self):
-        self.o = self.rng.normal(0, 1, (self.n, 1, self.OBS)).astype(np.float32)
+        self.o = self.rng.normal(0, 1, (self.n, self.agents, self.OBS)).astype(np.float32)
         return self.o
 
     def reset(self):
@@ -44,7 +44,8 @@ class ToyVectorEnv:
         final = self.o.copy()
         infos = {"episode_over": over, "reward_terms": reward[..., None],
                  "final_observation": final}
-        return self._obs(), reward, over[:, None], over[:, None], infos
+        flags = np.repeat(over[:, None], self.agents, axis=1)
+        return self._obs(), reward, flags, flags, infos
 
     def results(self):
         return []
@@ -89,6 +90,62 @@ class TrainTest(unittest.TestCase):
         self.assertEqual((s["term_racket"], s["term_contact"]), (0.5, 1.5))
         self.assertEqual(s["touch_rate"], 0.5)  # the first ended episode touched, the second not
         self.assertEqual(ep.summary(["racket", "contact"]), {"episodes": 0})
+
+    def test_frozen_self_play_plays_a_copy_refreshed_every_swap(self):
+        args = run_args(os.path.join(self.dir, "frozen"), "--samples", "2048", "--num-envs", "4",
+                        "--horizon", "64", "--hidden", "16", "--opponent", "frozen",
+                        "--swap-every", "2")
+        spec = dict(TOY_SPEC, slot_teams=[0, 1])
+        trainer = train.Trainer(args, spec=spec)
+        self.assertEqual((trainer.learning, trainer.others), ([0], [1]))
+        seen = []
+        opponent_actions = trainer.opponent_actions
+
+        def watch(raw):
+            seen.append(trainer.frozen[0].state_dict()["actor.0.weight"].clone())
+            return opponent_actions(raw)
+        trainer.opponent_actions = watch
+        trainer.train(make_env=lambda: ToyVectorEnv(4, agents=2))
+        self.assertEqual(trainer.iteration, 8)
+        # Iterations 1-2 met the initial copy, 3-4 the copy made after iteration 2, ...
+        per_iteration = [seen[i * 64] for i in range(8)]
+        self.assertTrue(torch.equal(per_iteration[0], per_iteration[1]))
+        self.assertFalse(torch.equal(per_iteration[1], per_iteration[2]))
+        self.assertTrue(torch.equal(per_iteration[2], per_iteration[3]))
+        self.assertTrue(torch.equal(trainer.frozen[0].state_dict()["actor.0.weight"],
+                                    trainer.model.state_dict()["actor.0.weight"]))
+
+    def test_warm_start_matches_observation_blocks_by_name(self):
+        solo = train.Trainer(run_args(os.path.join(self.dir, "solo"), "--sport", "table_tennis",
+                                      "--mode", "ball_return", "--hidden", "16"))
+        solo.norm.update(np.random.default_rng(1).normal(3, 2, (50, solo.obs_size)))
+        solo.save()
+        duel = train.Trainer(run_args(os.path.join(self.dir, "duel"), "--sport", "table_tennis",
+                                      "--mode", "1v1", "--hidden", "16"))
+        matched = duel.warm_start(os.path.join(self.dir, "solo"))
+        self.assertIn("self", matched)
+        self.assertIn("ball_position", matched)
+        at = 0
+        w_src = solo.model.state_dict()["actor.0.weight"]
+        w_dst = duel.model.state_dict()["actor.0.weight"]
+        offsets = {}
+        o = 0
+        for b in solo.spec["observation"]:
+            offsets[b["name"]] = o
+            o += b["size"]
+        for b in duel.spec["observation"]:
+            cols = w_dst[:, at:at + b["size"]]
+            if b["name"] in matched:
+                s0 = offsets[b["name"]]
+                self.assertTrue(torch.equal(cols, w_src[:, s0:s0 + b["size"]]), b["name"])
+                np.testing.assert_array_equal(duel.norm.mean[at:at + b["size"]],
+                                              solo.norm.mean[s0:s0 + b["size"]])
+            else:
+                self.assertEqual(float(cols.abs().sum()), 0.0, b["name"])
+            at += b["size"]
+        self.assertTrue(torch.equal(duel.model.state_dict()["actor.2.weight"],
+                                    solo.model.state_dict()["actor.2.weight"]))
+        self.assertLess(len(matched), len(duel.spec["observation"]), "1v1 has blocks of its own")
 
     def test_resume_goes_on_where_the_run_stopped(self):
         run = os.path.join(self.dir, "resume")
