@@ -178,7 +178,7 @@ class TrainTest(unittest.TestCase):
             env=env, capture_output=True, text=True, timeout=600)
         self.assertEqual(out.returncode, 0, out.stdout + out.stderr)
         for f in ("checkpoint.pt", "metrics.csv", "curves.png", "args.json",
-                  "snapshots/policy-latest.safetensors", "snapshots/policy-00004.safetensors"):
+                  "snapshots/policy-latest.safetensors", "snapshots/policy-v00004.safetensors"):
             self.assertTrue(os.path.exists(os.path.join(run, f)), f)
         rows = read_metrics(run)
         self.assertEqual(len(rows), 4)

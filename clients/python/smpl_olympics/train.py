@@ -323,7 +323,9 @@ class Trainer:
                     "frozen": None if self.frozen is None else
                     (self.frozen[0].state_dict(), self.frozen[1].state_dict())},
                    os.path.join(self.run_dir, "checkpoint.pt"))
-        path = self.snapshot_path(f"{self.iteration:05d}")
+        # "v<iteration>": the league's self-play (olympics-league selfplay --snapshots DIR) picks
+        # the newest up between matches and rates it against PFSP-chosen opponents.
+        path = self.snapshot_path(f"v{self.iteration:05d}")
         export_mlp(self.model.actor, path, activation="silu", obs_mean=self.norm.mean,
                    obs_std=self.norm.std(), policy_id=os.path.basename(os.path.normpath(self.run_dir)),
                    policy_version=str(self.iteration), sport=self.args.sport, mode=self.args.mode,
