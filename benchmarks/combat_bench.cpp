@@ -88,12 +88,14 @@ nlohmann::json to_json(const BoutStats& s, const std::string& sport) {
 
 nlohmann::json run_combat_bench(const CombatBenchOptions& o) {
   nlohmann::json report = {{"bouts", o.bouts}, {"sports", nlohmann::json::object()}};
-  const std::array<std::array<const char*, 2>, 3> pairings = {
-      {{"scripted", "scripted"}, {"scripted", "zero"}, {"random", "random"}}};
-  for (const std::string sport : {"fencing", "boxing"}) {
+  std::vector<std::array<std::string, 2>> pairings = {
+      {"scripted", "scripted"}, {"scripted", "zero"}, {"random", "random"}};
+  if (!o.challenger.empty()) pairings = {{"scripted", "scripted"}, {o.challenger, "scripted"}};
+  for (const std::string& sport : o.sports) {
     nlohmann::json& r = report["sports"][sport];
     for (const auto& [a, b] : pairings)
-      r["bouts"][std::string(a) + "_vs_" + b] = to_json(play_bouts(sport, a, b, o.bouts), sport);
+      r["bouts"][a + "_vs_" + b] = to_json(play_bouts(sport, a, b, o.bouts), sport);
+    if (!o.speed) continue;
     const core::ModelSpec& players =
         sport == "fencing" ? sports::fencing::fencer_model() : sports::boxing::boxer_model(true);
     r["speed_1v1"] = speed_1v1(sport, players, o.seconds, o.repeats, /*ticks=*/45);
@@ -123,6 +125,7 @@ void print_combat_report(const nlohmann::json& report) {
                   s["falls"][1].get<int>(), s["wins"][0].get<int>(), s["wins"][1].get<int>(),
                   s["draws"].get<int>());
     }
+    if (!r.contains("speed_1v1")) continue;
     const auto& v = r["speed_1v1"];
     std::printf(
         "  1v1 ticks/s on one core (zero actions, the first %d ticks of each bout): match "

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 namespace olympics::bench {
 
@@ -13,6 +15,11 @@ struct CombatBenchOptions {
   int bouts = 100;     // per sport and pairing
   double seconds = 2;  // wall seconds per speed measurement
   int repeats = 3;     // interleaved repeats (median reported)
+  // A policy to measure (mlp:FILE: a trained snapshot) in slot 0 against the scripted baseline,
+  // on seeds 1..bouts (the trainer's start at 10^6).
+  std::string challenger;
+  std::vector<std::string> sports = {"fencing", "boxing"};
+  bool speed = true;  // also the 1v1 ticks/s figure
 };
 
 nlohmann::json run_combat_bench(const CombatBenchOptions& options);

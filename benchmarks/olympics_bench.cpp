@@ -72,6 +72,11 @@ int main(int argc, char** argv) {
   comb->add_flag("--json", json, "print one JSON object instead of a table");
   comb->add_option("--bouts", combat.bouts, "bouts per sport and pairing (seeds 1..N)")
       ->check(CLI::PositiveNumber);
+  comb->add_option("--challenger", combat.challenger,
+                   "measure this policy (mlp:FILE) in slot 0 against scripted");
+  comb->add_option("--sports", combat.sports, "fencing, boxing (comma-separated)")->delimiter(',');
+  bool combat_no_speed = false;
+  comb->add_flag("--no-speed", combat_no_speed, "skip the 1v1 ticks/s measurement");
   comb->add_option("--seconds", combat.seconds, "wall seconds per speed measurement")
       ->check(CLI::PositiveNumber);
   comb->add_option("--repeats", combat.repeats, "interleaved repeats (median reported)")
@@ -142,6 +147,7 @@ int main(int argc, char** argv) {
       olympics::bench::print_racket_report(report);
   }
   if (*comb) {
+    combat.speed = !combat_no_speed;
     auto report = olympics::bench::run_combat_bench(combat);
     if (json)
       std::printf("%s\n", report.dump(2).c_str());
