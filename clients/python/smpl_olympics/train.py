@@ -61,6 +61,8 @@ def parse_args(argv=None):
     p.add_argument("--gamma", type=float, default=0.99)
     p.add_argument("--lam", type=float, default=0.95)
     p.add_argument("--clip", type=float, default=0.2)
+    p.add_argument("--target-kl", type=float, default=0.02,
+                   help="stop an update's epochs past 1.5x this KL (0: never)")
     p.add_argument("--log-std", type=float, default=-1.6, help="exploration sigma = exp(this)")
     p.add_argument("--learn-std", action="store_true", help="learn sigma (default: fixed)")
     p.add_argument("--residual", choices=["none", "scripted"], default="none",
@@ -142,7 +144,7 @@ class Trainer:
         self.iteration, self.samples, self.wall = 0, 0, 0.0
         self.frozen = None  # (model, norm) of --opponent frozen
         self.ppo = PpoSettings(lr=args.lr, epochs=args.epochs, minibatch=args.minibatch,
-                               clip=args.clip)
+                               clip=args.clip, target_kl=args.target_kl)
 
     # ---------------------------------------------------------------- policies in process
     def native(self, name, seed):
@@ -210,7 +212,8 @@ class Trainer:
         server = None
         if a.spawn_server:
             server, a.lcm_url = spawn_server(self.run_dir)
-        log = TrainingLog(self.run_dir, self.term_names, resume=self.iteration > 0)
+        log = TrainingLog(self.run_dir, self.term_names, resume=self.iteration > 0,
+                          until_iteration=self.iteration)
         env = (make_env or self.make_env)()
         self.make_helpers(a.num_envs)
         try:
@@ -416,7 +419,9 @@ def main(argv=None):
         stored = torch.load(os.path.join(args.resume, "checkpoint.pt"), weights_only=False)["args"]
         keep = {k: getattr(args, k) for k in ("samples", "lcm_url", "secret", "spawn_server",
                                                "quiet")}
-        args = argparse.Namespace(**{**stored, **keep, "run": args.resume, "resume": args.resume})
+        defaults = vars(parse_args([]))  # settings added since the run was stored
+        args = argparse.Namespace(**{**defaults, **stored, **keep, "run": args.resume,
+                                     "resume": args.resume})
     trainer = Trainer(args)
     if args.resume:
         trainer.load(args.resume)

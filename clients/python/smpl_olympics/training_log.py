@@ -12,15 +12,25 @@ def read_metrics(run_dir):
 
 
 class TrainingLog:
-    def __init__(self, run_dir, term_names, resume=False):
+    def __init__(self, run_dir, term_names, resume=False, until_iteration=None):
+        """`resume`: keep the rows already there up to `until_iteration` (the checkpoint's: a
+        run killed after it logged later iterations redoes them)."""
         self.path = os.path.join(run_dir, "metrics.csv")
         self.fields = (["iteration", "samples", "wall_s", "samples_per_s", "episodes",
                         "episode_return", "episode_length", "score", "win_rate", "touch_rate"] +
                        [f"term_{n}" for n in term_names] +
-                       ["policy_loss", "value_loss", "approx_kl", "std"])
-        if not (resume and os.path.exists(self.path)):
+                       ["policy_loss", "value_loss", "approx_kl", "update_steps", "std"])
+        rows = read_metrics(run_dir) if resume and os.path.exists(self.path) else []
+        kept = [r for r in rows if until_iteration is None or int(r["iteration"]) <= until_iteration]
+        if not rows or list(rows[0]) != self.fields or len(kept) != len(rows):
+            rows = kept
+            # A new run, or one stored by a version that logged other figures: its rows are
+            # kept under this version's header ("" for a figure it did not log).
             with open(self.path, "w", newline="") as f:
-                csv.writer(f).writerow(self.fields)
+                out = csv.writer(f)
+                out.writerow(self.fields)
+                for r in rows:
+                    out.writerow([r.get(k, "") for k in self.fields])
 
     def write(self, row):
         with open(self.path, "a", newline="") as f:
