@@ -228,7 +228,16 @@ void MatchRuntime::start(Clock::time_point now) {
   next_resend_ = now + seconds(resend_gap_s_);
   next_realtime_tick_ = now + seconds(kRealtimePeriod);
   publish_observations(all_clients());
+}
+
+// The scene track begins with the first tick, not at the start: the start answers the last
+// joiner and lets the host note the players, and should not wait for the track's header.
+void MatchRuntime::begin_scene() {
+  if (!scene_ || scene_started_) return;
+  scene_started_ = true;
   record([&](SceneRecorder& r) {
+    std::vector<std::string> agents;
+    for (int s = 0; s < game_->slot_count(); ++s) agents.push_back(clients_[slot_owner_[s]].agent);
     r.start(*game_, identity_.sport,
             {{"match_id", identity_.match_id},
              {"server_id", identity_.server_id},
@@ -236,7 +245,7 @@ void MatchRuntime::start(Clock::time_point now) {
              {"seed", identity_.settings.seed},
              {"options", identity_.settings.options},
              {"realtime", identity_.realtime},
-             {"agents", m.agent_names}});
+             {"agents", agents}});
   });
 }
 
@@ -367,6 +376,7 @@ void MatchRuntime::advance(Clock::time_point now) {
     actions.emplace_back(a);
     replay_actions_.insert(replay_actions_.end(), a.begin(), a.end());
   }
+  begin_scene();
   game_->step(actions);
   record([&](SceneRecorder& r) { r.tick(*game_); });
   tick_deadline_ = now + seconds(settings_.action_deadline_s);
@@ -417,8 +427,9 @@ void MatchRuntime::forfeit(int client, const std::string& why, Clock::time_point
       "forfeit: agent \"" + k.agent + "\" (team " + std::to_string(team) + ") " + why;
   std::fprintf(stderr, "[%s] %s\n", identity_.match_id.c_str(), reason.c_str());
   forfeit_ = nlohmann::json{{"tick", game_->tick()}, {"team", team}, {"reason", reason}};
+  if (phase_ == Phase::Running) begin_scene();
   game_->forfeit(team, reason);
-  if (phase_ == Phase::Running) record([&](SceneRecorder& r) { r.tick(*game_); });
+  if (scene_started_) record([&](SceneRecorder& r) { r.tick(*game_); });
   publish_observations(all_clients());
   finish(now);
 }

@@ -101,6 +101,7 @@ class MatchRuntime {
   void advance(Clock::time_point now);
   void publish_observations(const std::vector<int>& clients);
   void finish(Clock::time_point now);
+  void begin_scene();
   // Runs a recorder step; a recorder that fails (disk full) is dropped, the match goes on.
   template <typename Step>
   void record(Step step);
@@ -118,6 +119,7 @@ class MatchRuntime {
   protocol::Transport& transport_;
   std::unique_ptr<TrafficLog> log_;
   std::unique_ptr<SceneRecorder> scene_;
+  bool scene_started_ = false;
   olympics::match_created_t description_;
 
   Phase phase_ = Phase::Joining;

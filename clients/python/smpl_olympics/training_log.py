@@ -70,7 +70,14 @@ class TrainingLog:
         for ax, name in zip(axes.flat, series):
             pts = [(xi, float(r[name])) for xi, r in zip(x, rows) if r[name] not in ("", None)]
             if pts:
-                ax.plot(*zip(*pts), lw=1.2)
+                xs, ys = zip(*pts)
+                ax.plot(xs, ys, lw=0.6, alpha=0.35)
+                # Each iteration ends few episodes: a moving mean over ~1/40 of the run shows
+                # the trend.
+                w = max(1, len(ys) // 40)
+                smooth = [sum(ys[max(0, i - w + 1):i + 1]) / len(ys[max(0, i - w + 1):i + 1])
+                          for i in range(len(ys))]
+                ax.plot(xs, smooth, lw=1.6, color="C1")
             ax.set_title(name.replace("term_", "reward term: "), fontsize=9)
             ax.set_xlabel("samples", fontsize=8)
             ax.tick_params(labelsize=7)
