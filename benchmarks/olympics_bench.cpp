@@ -62,8 +62,7 @@ int main(int argc, char** argv) {
       ->delimiter(',');
   rack->add_option("--sports", racket.sports, "tennis, table_tennis (comma-separated)")
       ->delimiter(',');
-  bool no_speed = false;
-  rack->add_flag("--no-speed", no_speed, "skip the 1v1 ticks/s measurement");
+  rack->add_flag("--no-speed{false}", racket.speed, "skip the 1v1 ticks/s measurement");
   rack->add_option("--repeats", racket.repeats, "interleaved repeats (median reported)")
       ->check(CLI::PositiveNumber);
   olympics::bench::CombatBenchOptions combat;
@@ -75,8 +74,7 @@ int main(int argc, char** argv) {
   comb->add_option("--challenger", combat.challenger,
                    "measure this policy (mlp:FILE) in slot 0 against scripted");
   comb->add_option("--sports", combat.sports, "fencing, boxing (comma-separated)")->delimiter(',');
-  bool combat_no_speed = false;
-  comb->add_flag("--no-speed", combat_no_speed, "skip the 1v1 ticks/s measurement");
+  comb->add_flag("--no-speed{false}", combat.speed, "skip the 1v1 ticks/s measurement");
   comb->add_option("--seconds", combat.seconds, "wall seconds per speed measurement")
       ->check(CLI::PositiveNumber);
   comb->add_option("--repeats", combat.repeats, "interleaved repeats (median reported)")
@@ -139,7 +137,6 @@ int main(int argc, char** argv) {
       olympics::bench::print_server_report(report);
   }
   if (*rack) {
-    racket.speed = !no_speed;
     auto report = olympics::bench::run_racket_bench(racket);
     if (json)
       std::printf("%s\n", report.dump(2).c_str());
@@ -147,7 +144,6 @@ int main(int argc, char** argv) {
       olympics::bench::print_racket_report(report);
   }
   if (*comb) {
-    combat.speed = !combat_no_speed;
     auto report = olympics::bench::run_combat_bench(combat);
     if (json)
       std::printf("%s\n", report.dump(2).c_str());

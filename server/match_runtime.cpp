@@ -221,7 +221,7 @@ void MatchRuntime::start(Clock::time_point now) {
       std::chrono::duration_cast<std::chrono::microseconds>(started_wall_.time_since_epoch())
           .count();
   m.num_slots = game_->slot_count();
-  for (int s = 0; s < m.num_slots; ++s) m.agent_names.push_back(clients_[slot_owner_[s]].agent);
+  m.agent_names = slot_agents();
   send(protocol::kStart, m);
   tick_deadline_ = now + seconds(settings_.action_deadline_s);
   resend_gap_s_ = settings_.resend_interval_s;
@@ -236,17 +236,29 @@ void MatchRuntime::begin_scene() {
   if (!scene_ || scene_started_) return;
   scene_started_ = true;
   record([&](SceneRecorder& r) {
-    std::vector<std::string> agents;
-    for (int s = 0; s < game_->slot_count(); ++s) agents.push_back(clients_[slot_owner_[s]].agent);
-    r.start(*game_, identity_.sport,
-            {{"match_id", identity_.match_id},
-             {"server_id", identity_.server_id},
-             {"mode", identity_.settings.mode},
-             {"seed", identity_.settings.seed},
-             {"options", identity_.settings.options},
-             {"realtime", identity_.realtime},
-             {"agents", agents}});
+    r.start(*game_, identity_.sport, scene_about(identity_header(slot_agents())));
   });
+}
+
+std::vector<std::string> MatchRuntime::slot_agents() const {
+  std::vector<std::string> agents;
+  for (int s = 0; s < game_->slot_count(); ++s) agents.push_back(clients_[slot_owner_[s]].agent);
+  return agents;
+}
+
+// Who played what, as replays (and, through scene_about, scene tracks) record it.
+nlohmann::json MatchRuntime::identity_header(const std::vector<std::string>& agents) const {
+  return {{"match_id", identity_.match_id},
+          {"server_id", identity_.server_id},
+          {"server_version", protocol::kSoftwareVersion},
+          {"protocol_version", protocol::kProtocolVersion},
+          {"sport", identity_.sport},
+          {"mode", identity_.settings.mode},
+          {"seed", identity_.settings.seed},
+          {"time_limit_s", identity_.settings.time_limit_s},
+          {"options", identity_.settings.options},
+          {"realtime", identity_.realtime},
+          {"agents", agents}};
 }
 
 template <typename Step>
@@ -521,23 +533,12 @@ Replay MatchRuntime::replay() const {
   rp.actions = replay_actions_;
   const auto& r = result_;
   std::vector<double> scores(r.scores.begin(), r.scores.end());
-  rp.header = {{"match_id", identity_.match_id},
-               {"server_id", identity_.server_id},
-               {"server_version", protocol::kSoftwareVersion},
-               {"protocol_version", protocol::kProtocolVersion},
-               {"sport", identity_.sport},
-               {"mode", identity_.settings.mode},
-               {"seed", identity_.settings.seed},
-               {"time_limit_s", identity_.settings.time_limit_s},
-               {"options", identity_.settings.options},
-               {"realtime", identity_.realtime},
-               {"agents", r.agent_names},
-               {"result",
-                {{"ticks", r.ticks},
-                 {"reason", r.reason},
-                 {"winner_team", r.winner_team},
-                 {"scores", scores},
-                 {"state_hash", game_->state_hash()}}}};
+  rp.header = identity_header(r.agent_names);
+  rp.header["result"] = {{"ticks", r.ticks},
+                         {"reason", r.reason},
+                         {"winner_team", r.winner_team},
+                         {"scores", scores},
+                         {"state_hash", game_->state_hash()}};
   if (forfeit_) rp.header["forfeit"] = *forfeit_;
   return rp;
 }

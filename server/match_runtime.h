@@ -102,6 +102,8 @@ class MatchRuntime {
   void publish_observations(const std::vector<int>& clients);
   void finish(Clock::time_point now);
   void begin_scene();
+  std::vector<std::string> slot_agents() const;  // once every slot is claimed
+  nlohmann::json identity_header(const std::vector<std::string>& agents) const;
   // Runs a recorder step; a recorder that fails (disk full) is dropped, the match goes on.
   template <typename Step>
   void record(Step step);

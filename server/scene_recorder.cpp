@@ -32,16 +32,20 @@ std::string SceneRecorder::finish(const sports::SportMatch& game) {
   return path;
 }
 
+nlohmann::json scene_about(const nlohmann::json& h) {
+  return {{"match_id", h.value("match_id", "")},
+          {"server_id", h.value("server_id", "")},
+          {"mode", h.at("mode")},
+          {"seed", h.at("seed")},
+          {"options", h.value("options", nlohmann::json::object())},
+          {"realtime", h.value("realtime", false)},
+          {"agents", h.value("agents", nlohmann::json::array())}};
+}
+
 void record_scene_from_replay(const Replay& replay, const std::string& path) {
   SceneRecorder recorder(path, nullptr);
   const auto& h = replay.header;
-  nlohmann::json about = {{"match_id", h.value("match_id", "")},
-                          {"server_id", h.value("server_id", "")},
-                          {"mode", h.at("mode")},
-                          {"seed", h.at("seed")},
-                          {"options", h.value("options", nlohmann::json::object())},
-                          {"realtime", h.value("realtime", false)},
-                          {"agents", h.value("agents", nlohmann::json::array())}};
+  const nlohmann::json about = scene_about(h);
   bool started = false;
   auto match = rerun_replay(replay, [&](const sports::SportMatch& game) {
     if (!started) {

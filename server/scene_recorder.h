@@ -28,6 +28,10 @@ class SceneRecorder {
   SceneEncoder encoder_;
 };
 
+// What a track's header tells about its match, from a replay's header (or the same fields of a
+// match being played): one choice of fields, so a track re-made from a replay is the recorded one.
+nlohmann::json scene_about(const nlohmann::json& replay_header);
+
 // Re-runs a replay to write its scene track at `path` (for replays recorded without one).
 void record_scene_from_replay(const Replay& replay, const std::string& path);
 

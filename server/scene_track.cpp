@@ -87,13 +87,15 @@ std::string SceneEncoder::frame(const sports::SportMatch& game) {
   const auto events = o.info.find("events");
   const bool called = events != o.info.end() && !events->empty();
   const auto score = o.info.find("score");
-  std::string score_text = score != o.info.end() ? score->dump() : "";
-  if (called || score_text != last_score_) {
+  const bool has_score = score != o.info.end();
+  // Compared as JSON: no text is made for a tick whose score did not change.
+  const bool score_changed = has_score ? *score != last_score_ : !last_score_.is_null();
+  if (called || score_changed) {
     nlohmann::json e = {{"tick", game.tick()},
                         {"events", called ? *events : nlohmann::json::array()}};
-    if (score != o.info.end()) e["score"] = *score;
+    if (has_score) e["score"] = *score;
     append_record(out, 'E', e.dump());
-    last_score_ = std::move(score_text);
+    last_score_ = has_score ? *score : nlohmann::json();
   }
   return out;
 }

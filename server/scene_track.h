@@ -45,7 +45,7 @@ class SceneEncoder {
  private:
   std::vector<float> poses_;
   std::string frame_;
-  std::string last_score_;
+  nlohmann::json last_score_;  // null: the sport keeps no score (or none yet)
 };
 
 // Writes records to `<path>.part` through zstd and renames it to `path` when closed, so a
