@@ -12,7 +12,8 @@ namespace olympics::sports {
   X(tennis)                \
   X(table_tennis)          \
   X(fencing)               \
-  X(boxing)
+  X(boxing)                \
+  X(soccer)
 
 #define OLYMPICS_DECLARE_SPORT(name) std::unique_ptr<Sport> make_##name();
 OLYMPICS_SPORTS(OLYMPICS_DECLARE_SPORT)

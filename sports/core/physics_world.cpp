@@ -146,6 +146,8 @@ void PhysicsWorld::collide_pair(dGeomID a, dGeomID b) {
   contact.surface.soft_erp = settings_.contact_erp;
   contact.surface.soft_cfm = settings_.contact_cfm;
   double restitution = std::max(rest_a, rest_b);
+  if (tag_a && tag_a->absorbs) restitution = rest_a;
+  if (tag_b && tag_b->absorbs) restitution = rest_b;
   if (restitution > 0) {
     contact.surface.mode |= dContactBounce;
     contact.surface.bounce = restitution;

@@ -40,6 +40,9 @@ struct GeomTag {
   bool sensor = false;  // report this geom's contacts with their forces (sensed_contacts())
   double friction = 1.0;
   double restitution = 0.0;
+  // This geom's restitution, not the larger of the pair's, holds for its contacts: a net or
+  // padding swallows the bounce of a lively ball.
+  bool absorbs = false;
   // Set by PhysicsWorld::step when this geom touched the ground plane during the step.
   std::uint8_t* ground_touch = nullptr;
 };

@@ -2,13 +2,14 @@
 //
 // A ball is an ODE sphere in a PhysicsWorld. Restitution is the ball's side of the contact (the
 // world takes the larger of the two surfaces'), calibrated so that the official bounce tests come
-// out in range with drag acting (tests/core/ball_test.cpp). Drag F = -1/2 rho Cd A |v| v is added
-// before every physics step.
+// out in range with drag acting (tests/sports/ball_test.cpp). Drag F = -1/2 rho Cd A |v| v is added
+// before every physics step, and, for a ball on the ground, rolling resistance (grass): a force
+// against the horizontal velocity sized so that a rolling ball slows by c_rr * g.
 #pragma once
 
 #include <ode/ode.h>
 
-#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <memory>
 #include <string>
 
@@ -23,6 +24,7 @@ struct BallSpec {
   double restitution = 0;  // against a rigid floor
   double drag_coefficient = 0;
   double friction = 0.5;
+  double rolling_resistance = 0;  // c_rr: a rolling ball slows by c_rr * g on the ground
 };
 
 // The balls of the sports, from SPORTS.md (restitution calibrated here, see ball.cpp).
@@ -36,13 +38,25 @@ class Ball {
  public:
   Ball(core::PhysicsWorld& world, const BallSpec& spec, const Eigen::Vector3d& position,
        const Eigen::Vector3d& velocity = Eigen::Vector3d::Zero());
-  // Adds this step's air drag; call before every physics step.
-  void prepare_step();
+  // Adds this step's air drag and rolling resistance; call before every physics step of `dt`.
+  void prepare_step(double dt);
   Eigen::Vector3d position() const;
   Eigen::Vector3d velocity() const;
-  void set_state(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity);
+  Eigen::Vector3d angular_velocity() const;
+  Eigen::Quaterniond orientation() const;
+  void set_state(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
+                 const Eigen::Vector3d& spin = Eigen::Vector3d::Zero());
+  // Moves the ball without changing its velocity, spin or orientation.
+  void move_to(const Eigen::Vector3d& position);
+  // Does the ball rest or roll on the ground (within a few mm, not flying up or down)?
+  bool on_ground() const;
+  // The spin of a ball rolling without slipping at `velocity` on the ground.
+  Eigen::Vector3d rolling_spin(const Eigen::Vector3d& velocity) const;
   const BallSpec& spec() const { return spec_; }
   dBodyID body() const { return body_; }
+  int entity() const { return tag_->entity; }
+  // Report the ball's contacts after each step (PhysicsWorld::sensed_contacts): who touched it.
+  void sense_contacts() { tag_->sensor = true; }
 
   static constexpr double kAirDensity = 1.2;  // kg/m^3
 

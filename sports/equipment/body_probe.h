@@ -27,13 +27,27 @@ class BodyProbe {
   BodyProbe(const BodyProbe&) = delete;
   BodyProbe& operator=(const BodyProbe&) = delete;
 
+  struct Options {
+    bool arena = false;   // also the static arena's geoms (entity -1), not the ground plane
+    bool refine = false;  // bisect to the first overlapping centre within a millimetre
+  };
   // The first touch along p0 -> p1 with a geom of an entity (>= 0) that `ignore` does not
   // exclude.
   std::optional<BodyTouch> first_touch(core::PhysicsWorld& world, const Eigen::Vector3d& p0,
                                        const Eigen::Vector3d& p1,
-                                       const std::function<bool(int entity, int body)>& ignore);
+                                       const std::function<bool(int entity, int body)>& ignore,
+                                       const Options& options);
+  std::optional<BodyTouch> first_touch(core::PhysicsWorld& world, const Eigen::Vector3d& p0,
+                                       const Eigen::Vector3d& p1,
+                                       const std::function<bool(int entity, int body)>& ignore) {
+    return first_touch(world, p0, p1, ignore, Options{});
+  }
 
  private:
+  // The contact of the probe sphere centred at `c` with `geom`, if they overlap.
+  std::optional<BodyTouch> touch_at(dGeomID geom, const core::GeomTag& tag,
+                                    const Eigen::Vector3d& c);
+
   double radius_;
   dGeomID sphere_;
 };

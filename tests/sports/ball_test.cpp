@@ -19,7 +19,7 @@ double rebound_height(const BallSpec& spec, double drop) {
   bool bounced = false;
   double top = 0;
   for (int step = 0; step < 120 * 6; ++step) {
-    ball.prepare_step();
+    ball.prepare_step(kDt);
     world.step(kDt);
     const double vz = ball.velocity().z(), bottom = ball.position().z() - spec.radius;
     if (!bounced && vz > 0) bounced = true;
@@ -64,12 +64,12 @@ TEST(Ball, MassesAndQuadraticDrag) {
   EXPECT_NEAR(m.mass, 0.057, 1e-12);
   // One step: dv = -k v^2 dt / m with k = 1/2 rho Cd A.
   const double k = 0.5 * Ball::kAirDensity * 0.55 * M_PI * 0.032 * 0.032;
-  ball.prepare_step();
+  ball.prepare_step(kDt);
   world.step(kDt);
   EXPECT_NEAR(ball.velocity().x(), 30 - k * 900 / 0.057 * kDt, 1e-6);
   // A fast ball loses a lot over 10 m: 30 m/s -> about 23 m/s (exp(-k x / m)).
   while (ball.position().x() < 10) {
-    ball.prepare_step();
+    ball.prepare_step(kDt);
     world.step(kDt);
   }
   EXPECT_NEAR(ball.velocity().x(), 30 * std::exp(-k * ball.position().x() / 0.057), 0.2);

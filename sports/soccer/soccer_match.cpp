@@ -1,0 +1,391 @@
+#include "soccer/soccer_match.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/humanoid_assets.h"
+
+namespace olympics::sports::soccer {
+namespace {
+
+double tenths(double x) { return std::round(x * 10) / 10; }
+
+const core::ModelSpec& player_model() {
+  static const core::ModelSpec spec = core::load_humanoid(core::HumanoidKind::Smpl);
+  return spec;
+}
+
+constexpr double kKickerBehind_m = 2.0;  // the penalty kicker starts this far behind the ball
+constexpr double kAtRest_mps = 0.05;     // penalty: a touched ball slower than this...
+constexpr double kAtRestFor_s = 1.0;     // ...for this long has stopped
+constexpr double kSpin_limit = 100;      // rad/s, observation clamp
+
+}  // namespace
+
+SoccerMode soccer_mode(const std::string& mode) {
+  if (mode == "penalty_kick") return SoccerMode::PenaltyKick;
+  if (mode == "penalty_kick_keeper") return SoccerMode::PenaltyKickKeeper;
+  return SoccerMode::TeamPlay;
+}
+
+std::vector<LayoutBlock> soccer_task_layout(const ModeSpec& mode) {
+  std::vector<LayoutBlock> blocks = {
+      {"ball", 9, "m, m/s, rad/s",
+       "the ball's centre relative to the root (3), velocity (3), spin (3), heading frame"},
+      {"goals", 6, "m",
+       "the centre of the goal I attack (3) and of the goal I defend (3), at half the goal's "
+       "height, relative to the root, heading frame"},
+      {"field", 4, "m, cos, sin",
+       "my root from the centre spot along my attack direction and across it (left positive); "
+       "my heading relative to the attack direction (cos, sin)"}};
+  const int teammates =
+      static_cast<int>(std::count(mode.slot_teams.begin(), mode.slot_teams.end(), 0)) - 1;
+  const int opponents = mode.slot_count() - teammates - 1;
+  if (teammates > 0)
+    blocks.push_back({"teammates", 6 * teammates, "m, m/s",
+                      "each teammate's root position (3) and velocity (3), heading frame, in slot "
+                      "order"});
+  if (opponents > 0)
+    blocks.push_back({"opponents", 6 * opponents, "m, m/s",
+                      "each opponent's root position (3) and velocity (3), heading frame, in slot "
+                      "order"});
+  blocks.push_back({"match", 5, "goals, fraction, flag, half",
+                    "my side's goals, the other side's goals, share of the match time left, the "
+                    "restart being waited for (+1 mine to take, -1 theirs, 0 ball in play), the "
+                    "half (0, 1)"});
+  return blocks;
+}
+
+std::vector<RefereeCall> soccer_calls() {
+  return {{"goal",
+           "the whole ball crossed the goal line in the goal (slot: scorer, team, "
+           "assist_slot, own_goal)"},
+          {"out", "the whole ball left the field (line: touch or goal; last_touch_slot)"},
+          {"restart", "play restarts (kind: throw_in, free_kick, goal_kick, corner; team, x, y)"},
+          {"kick_off", "play (re)starts from the centre (team: the side that kicks off)"},
+          {"half_time", "the teams change ends (half)"},
+          {"encroachment",
+           "an opponent played a restart before the taking side: taken again "
+           "(culprit_slot)"},
+          {"stopped", "penalty kick: the touched ball came to rest in the field"},
+          {"stood_up", "a player down for the set time was stood up where it lay"},
+          {"fall", "a player fell (body)"}};
+}
+
+SoccerMatch::SoccerMatch(const SoccerConfig& config, const ModeSpec& mode, Layout layout,
+                         const MatchSettings& settings)
+    : SmplMatch(mode, std::move(layout), settings),
+      config_(config),
+      kind_(soccer_mode(mode.name)),
+      rng_(settings.seed),
+      guard_(equipment::soccer_ball().radius),
+      referee_(config.field, config.rules, mode.slot_teams, equipment::soccer_ball().radius) {
+  config_.field.build(scene().world());
+  const double r = equipment::soccer_ball().radius;
+  if (kind_ == SoccerMode::TeamPlay) {
+    spawn_ = {0, 0, r};
+  } else {
+    spawn_ = {config_.field.half_length() - config_.penalty_distance, 0, r};
+  }
+  ball_ = std::make_unique<equipment::Ball>(scene().world(), equipment::soccer_ball(), spawn_);
+  ball_->sense_contacts();
+  touched_.assign(slot_count(), 0);
+  down_since_.assign(slot_count(), -1);
+  root_before_.resize(slot_count());
+  for (int s = 0; s < slot_count(); ++s) add_player(player_model(), {});
+  if (kind_ == SoccerMode::TeamPlay) {
+    const int first = std::uniform_int_distribution<int>(0, 1)(rng_);
+    referee_.start(first, 0.0);
+    kick_off_positions(first);
+    nlohmann::json e = referee_event("kick_off", 0.0);
+    e["team"] = first;
+    log(std::move(e));
+  } else {
+    reset_player(0, placement(spawn_.head<2>() - Eigen::Vector2d(kKickerBehind_m, 0), 1));
+    if (kind_ == SoccerMode::PenaltyKickKeeper)
+      reset_player(1, placement({config_.field.half_length() - 0.3, 0}, -1));
+  }
+  remember_positions();
+}
+
+core::RootPlacement SoccerMatch::placement(const Eigen::Vector2d& at, int facing) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  const double along = u(rng_), across = u(rng_), turn = u(rng_);
+  return {{at.x() + 0.1 * along, at.y() + 0.1 * across, 0}, (facing > 0 ? 0.0 : M_PI) + 0.1 * turn};
+}
+
+int SoccerMatch::attack(int slot) const {
+  if (kind_ != SoccerMode::TeamPlay) return team_of(slot) == 0 ? 1 : -1;
+  return referee_.attack_direction(team_of(slot));
+}
+
+// Kick-off: every player in its own half; the kicking side's first player just behind the
+// ball, its second deeper; the other side outside the centre circle.
+void SoccerMatch::kick_off_positions(int kicking_team) {
+  std::array<int, 2> index{};
+  const double keep = std::max(config_.rules.restart_distance, Field::kCentreCircle) + 0.5;
+  for (int s = 0; s < slot_count(); ++s) {
+    const int team = team_of(s), i = index[team]++;
+    const int d = referee_.attack_direction(team);
+    Eigen::Vector2d at;
+    if (team == kicking_team)
+      at = i == 0 ? Eigen::Vector2d(-d * 0.6, 0) : Eigen::Vector2d(-d * 5.0, 3.0);
+    else
+      at = i == 0 ? Eigen::Vector2d(-d * keep, 0) : Eigen::Vector2d(-d * (keep + 3), -3.0);
+    reset_player(s, placement(at, d));
+  }
+  ball_->set_state({0, 0, ball_->spec().radius}, Eigen::Vector3d::Zero());
+}
+
+// Any opponent nearer the restart's spot than the restart distance goes back to it, on the
+// line from the spot to its own goal, facing the ball.
+void SoccerMatch::clear_restart_area(const Restart& r) {
+  ball_->set_state({r.spot.x(), r.spot.y(), ball_->spec().radius}, Eigen::Vector3d::Zero());
+  const double keep = config_.rules.restart_distance;
+  for (int s = 0; s < slot_count(); ++s) {
+    if (team_of(s) == r.team) continue;
+    const Eigen::Vector2d root = player(s).body_state(0).position.head<2>();
+    if ((root - r.spot).norm() >= keep) continue;
+    const Eigen::Vector2d own_goal(-attack(s) * config_.field.half_length(), 0);
+    Eigen::Vector2d away = own_goal - r.spot;
+    away = away.norm() > 1e-6 ? Eigen::Vector2d(away.normalized()) : Eigen::Vector2d(-attack(s), 0);
+    const Eigen::Vector2d at = r.spot + (keep + 0.3) * away;
+    const Eigen::Vector2d look = r.spot - at;
+    reset_player(s, {{at.x(), at.y(), 0}, std::atan2(look.y(), look.x())});
+  }
+}
+
+void SoccerMatch::before_physics_step() {
+  const double dt = scene().settings().physics_dt();
+  ball_->prepare_step(dt);
+  guard_.before_step(scene().world(), *ball_, dt);
+}
+
+void SoccerMatch::after_physics_step(double) {
+  for (const auto& c : scene().world().sensed_contacts()) {
+    if (!c.other || c.other->entity < 0) continue;
+    for (int s = 0; s < slot_count(); ++s) {
+      if (player(s).entity() != c.other->entity) continue;
+      touched_[s] = 1;
+      if (kind_ == SoccerMode::TeamPlay) referee_.touch(s, time());
+      if (s == 0) kicked_ = true;
+    }
+  }
+}
+
+RewardState SoccerMatch::reward_state(int slot) const {
+  RewardState s;
+  s.root_before = root_before_[slot];
+  s.root = player(slot).body_state(0).position;
+  s.ball_before = ball_before_;
+  s.ball = ball_->position();
+  s.ball_velocity = ball_->velocity();
+  s.attack = attack(slot);
+  s.target = config_.field.goal_centre(s.attack);
+  s.fallen = down(slot);
+  return s;
+}
+
+void SoccerMatch::remember_positions() {
+  for (int s = 0; s < slot_count(); ++s) root_before_[s] = player(s).body_state(0).position;
+  ball_before_ = ball_->position();
+  std::fill(touched_.begin(), touched_.end(), 0);
+}
+
+void SoccerMatch::stand_up_fallen() {
+  for (int s = 0; s < slot_count(); ++s) {
+    if (!down(s)) {
+      down_since_[s] = -1;
+      continue;
+    }
+    if (down_since_[s] < 0) down_since_[s] = time();
+    if (!config_.stand_up || time() - down_since_[s] < config_.stand_up_after_s) continue;
+    const Eigen::Vector3d at = player(s).body_state(0).position;
+    reset_player(s, {{at.x(), at.y(), 0}, attack(s) > 0 ? 0.0 : M_PI});
+    down_since_[s] = -1;
+    log(referee_event("stood_up", time(), s));
+  }
+}
+
+void SoccerMatch::settle_tick() {
+  if (kind_ == SoccerMode::TeamPlay)
+    settle_team_play();
+  else
+    settle_penalty();
+  if (outcome_.match_over) outcome_.info["goals"] = goals_;
+  remember_positions();
+}
+
+void SoccerMatch::settle_penalty() {
+  const double dt = scene().settings().control_dt;
+  int end = 0;
+  const Crossed crossed = config_.field.crossed(ball_->position(), ball_->spec().radius, &end);
+  const bool goal = crossed == Crossed::Goal && end == 1;
+  still_s_ = kicked_ && ball_->velocity().norm() < kAtRest_mps ? still_s_ + dt : 0;
+  set_reward(0, penalty_kick_terms(reward_state(0), spawn_, goal));
+  if (kind_ == SoccerMode::PenaltyKickKeeper)
+    set_reward(1, goalkeeper_terms(reward_state(1), goal));
+  const int keeper_wins = kind_ == SoccerMode::PenaltyKickKeeper ? 1 : -1;
+  if (goal) {
+    outcome_.scores[0] = 1;
+    nlohmann::json e = referee_event("goal", time(), 0);
+    e["team"] = 0;
+    e["assist_slot"] = -1;
+    e["own_goal"] = false;
+    log(std::move(e));
+    goals_.push_back({{"team", 0}, {"scorer_slot", 0}, {"t", tenths(time())}});
+  } else if (crossed != Crossed::None) {
+    nlohmann::json e = referee_event("out", time());
+    e["line"] = crossed == Crossed::TouchLine ? "touch" : "goal";
+    e["last_touch_slot"] = kicked_ ? 0 : -1;
+    log(std::move(e));
+  } else if (still_s_ >= kAtRestFor_s) {
+    log(referee_event("stopped", time()));
+  }
+  outcome_.info["score"] = score_json();
+  if (goal) return outcome_.end("goal", 0);
+  if (crossed != Crossed::None) return outcome_.end("missed", keeper_wins);
+  if (still_s_ >= kAtRestFor_s) return outcome_.end("ball_stopped", keeper_wins);
+}
+
+void SoccerMatch::settle_team_play() {
+  stand_up_fallen();
+  const auto stop = referee_.update(ball_->position(), time());
+  const int scoring = stop && stop->goal ? stop->goal->team : -1;
+  for (int s = 0; s < slot_count(); ++s) {
+    const int goal = scoring < 0 ? 0 : (team_of(s) == scoring ? 1 : -1);
+    set_reward(s, team_play_terms(reward_state(s), goal));
+  }
+  if (stop) {
+    log_stoppage(*stop);
+    carry_out(*stop);
+  }
+  const auto& score = referee_.score();
+  outcome_.scores = {static_cast<float>(score[0]), static_cast<float>(score[1])};
+  outcome_.info["score"] = score_json();
+}
+
+void SoccerMatch::log_stoppage(const Stoppage& s) {
+  if (s.goal) {
+    const GoalCall& g = *s.goal;
+    nlohmann::json e = referee_event("goal", time(), g.scorer);
+    e["team"] = g.team;
+    e["assist_slot"] = g.assist;
+    e["own_goal"] = g.own_goal;
+    log(std::move(e));
+    const auto& score = referee_.score();
+    goals_.push_back({{"team", g.team},
+                      {"scorer_slot", g.scorer},
+                      {"assist_slot", g.assist},
+                      {"own_goal", g.own_goal},
+                      {"t", tenths(time())},
+                      {"score", std::to_string(score[0]) + "-" + std::to_string(score[1])}});
+  } else if (s.reason == "out") {
+    nlohmann::json e = referee_event("out", time());
+    e["line"] = s.line;
+    e["last_touch_slot"] = s.last_touch;
+    log(std::move(e));
+  } else if (s.reason == "half_time") {
+    nlohmann::json e = referee_event("half_time", time());
+    e["half"] = referee_.half();
+    log(std::move(e));
+  } else if (s.reason == "encroachment") {
+    nlohmann::json e = referee_event("encroachment", time());
+    e["culprit_slot"] = s.culprit;
+    log(std::move(e));
+  }
+  const Restart& r = s.restart;
+  nlohmann::json e = referee_event(r.kind == RestartKind::KickOff ? "kick_off" : "restart", time());
+  e["team"] = r.team;
+  if (r.kind != RestartKind::KickOff) {
+    e["kind"] = restart_name(r.kind);
+    e["x"] = tenths(r.spot.x());
+    e["y"] = tenths(r.spot.y());
+  }
+  log(std::move(e));
+}
+
+void SoccerMatch::carry_out(const Stoppage& s) {
+  if (s.restart.kind == RestartKind::KickOff)
+    kick_off_positions(s.restart.team);
+  else
+    clear_restart_area(s.restart);
+}
+
+nlohmann::json SoccerMatch::score_json() const {
+  const int a = static_cast<int>(outcome_.scores[0]);
+  const int b = team_count() > 1 ? static_cast<int>(outcome_.scores[1]) : 0;
+  nlohmann::json j = {{"goals", {a, b}}, {"text", std::to_string(a) + "-" + std::to_string(b)}};
+  if (kind_ == SoccerMode::TeamPlay) j["half"] = referee_.half() + 1;
+  return j;
+}
+
+void SoccerMatch::on_time_limit() {
+  outcome_.info["goals"] = goals_;
+  end_by_time_limit(leading_team());
+}
+
+void SoccerMatch::write_task_observation(int slot, const HeadingFrame& frame,
+                                         ObservationWriter& out) const {
+  const int d = attack(slot);
+  out.begin("ball")
+      .put(frame.point(ball_->position()))
+      .put(frame.vector(ball_->velocity()))
+      .put_clamped(frame.vector(ball_->angular_velocity()), kSpin_limit);
+  out.begin("goals")
+      .put(frame.point(config_.field.goal_centre(d)))
+      .put(frame.point(config_.field.goal_centre(-d)));
+  const Eigen::Vector3d& root = frame.root.position;
+  const double relative = core::heading_angle(frame.root.orientation) - (d > 0 ? 0.0 : M_PI);
+  out.begin("field")
+      .put(d * root.x())
+      .put(d * root.y())
+      .put(std::cos(relative))
+      .put(std::sin(relative));
+  const auto others = [&](bool same_team) {
+    for (int s = 0; s < slot_count(); ++s) {
+      if (s == slot || (team_of(s) == team_of(slot)) != same_team) continue;
+      const core::BodyState st = player(s).body_state(0);
+      out.put(frame.point(st.position)).put(frame.vector(st.linear_velocity));
+    }
+  };
+  const auto& blocks = layout().observation;
+  const auto has = [&](const char* name) {
+    return std::any_of(blocks.begin(), blocks.end(),
+                       [&](const LayoutBlock& b) { return b.name == name; });
+  };
+  if (has("teammates")) others((out.begin("teammates"), true));
+  if (has("opponents")) others((out.begin("opponents"), false));
+  const int mine = team_of(slot);
+  const double theirs_score = team_count() > 1 ? outcome_.scores[1 - mine] : 0.0;
+  double restart = 0;
+  if (const auto& p = referee_.pending(); p && kind_ == SoccerMode::TeamPlay)
+    restart = p->team == mine ? 1 : -1;
+  out.begin("match")
+      .put(outcome_.scores[mine])
+      .put(theirs_score)
+      .put(1.0 - static_cast<double>(tick()) / time_limit_ticks())
+      .put(restart)
+      .put(kind_ == SoccerMode::TeamPlay ? referee_.half() : 0);
+}
+
+void SoccerMatch::extra_state(std::vector<double>& values) const {
+  const dBodyID b = ball_->body();
+  values.insert(values.end(), dBodyGetPosition(b), dBodyGetPosition(b) + 3);
+  values.insert(values.end(), dBodyGetQuaternion(b), dBodyGetQuaternion(b) + 4);
+  values.insert(values.end(), dBodyGetLinearVel(b), dBodyGetLinearVel(b) + 3);
+  values.insert(values.end(), dBodyGetAngularVel(b), dBodyGetAngularVel(b) + 3);
+}
+
+void SoccerMatch::describe_scene(SceneBuilder& scene) const {
+  config_.field.describe(scene);
+  const int ball = scene.add_body("ball", -1, "ball");
+  scene.add_sphere(ball, Eigen::Vector3d::Zero(), ball_->spec().radius, "ball", "#f8f8f8");
+}
+
+void SoccerMatch::extra_scene_poses(std::vector<float>& out) const {
+  append_pose(out, ball_->position(), ball_->orientation());
+}
+
+}  // namespace olympics::sports::soccer

@@ -1,0 +1,96 @@
+// A soccer match of SMPL humanoids: modes penalty_kick (one kicker, an empty goal),
+// penalty_kick_keeper (a kicker and a goalkeeper), 1v1 and 2v2. The ball is an ODE body (a size-5
+// ball with drag and rolling resistance, equipment/ball.h) that players move with any body part;
+// a FastBallGuard keeps a hard shot from passing through a post, the bar, the net or a foot.
+// Who touched the ball comes from its sensed contacts at the physics rate.
+//
+// Penalty kick: the ball on the spot `penalty_distance` from the goal at +x, the kicker 2 m
+// behind it; the episode ends with a goal, the ball out of play, the ball at rest after a touch,
+// or the time limit. Team play: the SoccerReferee's rules (goals, throw-ins, goal kicks,
+// corners, kick-offs, halves); this class carries out its restarts: the ball on its spot, the
+// players back in their halves for a kick-off, opponents moved back from any other restart.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <random>
+
+#include "equipment/ball.h"
+#include "equipment/fast_ball.h"
+#include "framework/smpl_match.h"
+#include "soccer/field.h"
+#include "soccer/soccer_referee.h"
+#include "soccer/soccer_rewards.h"
+
+namespace olympics::sports::soccer {
+
+enum class SoccerMode { PenaltyKick, PenaltyKickKeeper, TeamPlay };
+
+struct SoccerConfig {
+  Field field;
+  SoccerRules rules;
+  double penalty_distance = 11;  // m from the goal line to the penalty spot
+  bool stand_up = false;         // falls: a player down this long is stood up where it lies
+  double stand_up_after_s = 2;
+};
+
+SoccerMode soccer_mode(const std::string& mode);
+std::vector<LayoutBlock> soccer_task_layout(const ModeSpec& mode);
+std::vector<RefereeCall> soccer_calls();
+
+class SoccerMatch : public SmplMatch {
+ public:
+  SoccerMatch(const SoccerConfig& config, const ModeSpec& mode, Layout layout,
+              const MatchSettings& settings);
+
+  // For tests and benchmarks: the ball (its state may be set), the rules, the field.
+  equipment::Ball& ball() { return *ball_; }
+  const equipment::Ball& ball() const { return *ball_; }
+  const SoccerReferee& referee() const { return referee_; }
+  const Field& field() const { return config_.field; }
+  // Whether a player touched the ball this tick, and which (the last one).
+  const std::vector<std::uint8_t>& touched_this_tick() const { return touched_; }
+  // Where a player of `team` would stand to take (or face) a restart; the penalty kicker's start.
+  Eigen::Vector3d penalty_spot() const { return spawn_; }
+
+ private:
+  void write_task_observation(int slot, const HeadingFrame& frame,
+                              ObservationWriter& out) const override;
+  void before_physics_step() override;
+  void after_physics_step(double step_start) override;
+  void settle_tick() override;
+  void on_time_limit() override;
+  void extra_state(std::vector<double>& values) const override;
+  void describe_scene(SceneBuilder& scene) const override;
+  void extra_scene_poses(std::vector<float>& out) const override;
+
+  void settle_penalty();
+  void settle_team_play();
+  void carry_out(const Stoppage& s);
+  void log_stoppage(const Stoppage& s);
+  void kick_off_positions(int kicking_team);
+  void clear_restart_area(const Restart& r);
+  void stand_up_fallen();
+  int attack(int slot) const;
+  RewardState reward_state(int slot) const;
+  void remember_positions();
+  nlohmann::json score_json() const;
+  core::RootPlacement placement(const Eigen::Vector2d& at, int facing);
+
+  SoccerConfig config_;
+  SoccerMode kind_;
+  std::mt19937_64 rng_;
+  std::unique_ptr<equipment::Ball> ball_;
+  equipment::FastBallGuard guard_;
+  SoccerReferee referee_;
+  Eigen::Vector3d spawn_ = Eigen::Vector3d::Zero();  // the ball's spot (penalty kick)
+  std::vector<Eigen::Vector3d> root_before_;
+  Eigen::Vector3d ball_before_ = Eigen::Vector3d::Zero();
+  std::vector<std::uint8_t> touched_;  // per slot, this tick
+  std::vector<double> down_since_;     // per slot: when it went down (stand_up)
+  bool kicked_ = false;                // penalty: the kicker has touched the ball
+  double still_s_ = 0;                 // penalty: how long the touched ball has been at rest
+  nlohmann::json goals_ = nlohmann::json::array();  // every goal, for the result
+};
+
+}  // namespace olympics::sports::soccer
