@@ -28,20 +28,22 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-double match_ticks_per_s(const std::string& sport, double seconds, int ticks_per_match) {
+double match_ticks_per_s(const std::string& sport, double seconds, int ticks_per_match,
+                         const std::string& mode) {
   const auto& s = sports::sport_or_throw(sport);
+  const int slots = s.modes().at(mode).slot_count();
   std::vector<float> act(69, 0.0f);
-  std::vector<std::span<const float>> actions(2, std::span<const float>(act));
+  std::vector<std::span<const float>> actions(slots, std::span<const float>(act));
   std::vector<float> obs;
   long ticks = 0;
   double stepping = 0;
   std::uint64_t seed = 1;
   while (stepping < seconds) {
-    auto match = s.create({"1v1", seed++, 60.0, {}});
+    auto match = s.create({mode, seed++, 60.0, {}});
     obs.resize(match->obs_size());
     const auto start = Clock::now();
     for (int t = 0; t < ticks_per_match && !match->outcome().match_over; ++t, ++ticks) {
-      for (int slot = 0; slot < 2; ++slot) match->observe(slot, obs);
+      for (int slot = 0; slot < slots; ++slot) match->observe(slot, obs);
       match->step(actions);
     }
     stepping += since(start);
@@ -49,17 +51,18 @@ double match_ticks_per_s(const std::string& sport, double seconds, int ticks_per
   return ticks / stepping;
 }
 
-double bare_ticks_per_s(const core::ModelSpec& spec, double seconds, int ticks_per_match) {
+double bare_ticks_per_s(const core::ModelSpec& spec, double seconds, int ticks_per_match,
+                        int players) {
   std::vector<float> act(69, 0.0f);
   long ticks = 0;
   double stepping = 0;
   while (stepping < seconds) {
     core::HumanoidScene scene;
-    scene.add_humanoid(spec, {{-2, 0, 0}, 0});
-    scene.add_humanoid(spec, {{2, 0, 0}, M_PI});
+    for (int i = 0; i < players; ++i)  // facing each other in pairs, 3 m between pairs
+      scene.add_humanoid(spec, {{i % 2 == 0 ? -2.0 : 2.0, 3.0 * (i / 2), 0}, i % 2 ? M_PI : 0});
     const auto start = Clock::now();
     for (int t = 0; t < ticks_per_match; ++t, ++ticks) {
-      for (int i = 0; i < 2; ++i) scene.set_action(i, act);
+      for (int i = 0; i < players; ++i) scene.set_action(i, act);
       scene.tick();
     }
     stepping += since(start);
@@ -67,12 +70,13 @@ double bare_ticks_per_s(const core::ModelSpec& spec, double seconds, int ticks_p
   return ticks / stepping;
 }
 
-nlohmann::json speed_1v1(const std::string& sport, const core::ModelSpec& players, double seconds,
-                         int repeats, int ticks) {
+nlohmann::json speed_vs_bare(const std::string& sport, const core::ModelSpec& players,
+                             double seconds, int repeats, int ticks, const std::string& mode) {
+  const int count = sports::sport_or_throw(sport).modes().at(mode).slot_count();
   std::vector<double> match, bare, ratio;
   for (int i = 0; i < repeats; ++i) {
-    match.push_back(match_ticks_per_s(sport, seconds, ticks));
-    bare.push_back(bare_ticks_per_s(players, seconds, ticks));
+    match.push_back(match_ticks_per_s(sport, seconds, ticks, mode));
+    bare.push_back(bare_ticks_per_s(players, seconds, ticks, count));
     ratio.push_back(match.back() / bare.back());
   }
   return {{"match_ticks_per_s", median(match)},

@@ -98,7 +98,7 @@ nlohmann::json run_combat_bench(const CombatBenchOptions& o) {
     if (!o.speed) continue;
     const core::ModelSpec& players =
         sport == "fencing" ? sports::fencing::fencer_model() : sports::boxing::boxer_model(true);
-    r["speed_1v1"] = speed_1v1(sport, players, o.seconds, o.repeats, /*ticks=*/45);
+    r["speed_1v1"] = speed_vs_bare(sport, players, o.seconds, o.repeats, /*ticks=*/45);
   }
   return report;
 }

@@ -4,6 +4,7 @@
 //   olympics-bench server  [--json] [--seconds S] [--matches M] [--workers W]
 //   olympics-bench racket  [--json] [--episodes N] [--seconds S] [--repeats R]
 //   olympics-bench combat  [--json] [--bouts N] [--seconds S] [--repeats R]
+//   olympics-bench soccer  [--json] [--kicks N] [--matches M] [--half-s S] [--policies P,..]
 //   olympics-bench soak    [--json] [--minutes M] [--matches N] [--workers W] (an hour; not CI)
 //   olympics-bench vector  [--json] [--envs N] [--workers W] [--seconds S] [--connect URL]
 #include <CLI/CLI.hpp>
@@ -14,6 +15,7 @@
 #include "racket_bench.h"
 #include "server_bench.h"
 #include "soak_bench.h"
+#include "soccer_bench.h"
 #include "vector_bench.h"
 
 int main(int argc, char** argv) {
@@ -64,6 +66,23 @@ int main(int argc, char** argv) {
       ->delimiter(',');
   rack->add_flag("--no-speed{false}", racket.speed, "skip the 1v1 ticks/s measurement");
   rack->add_option("--repeats", racket.repeats, "interleaved repeats (median reported)")
+      ->check(CLI::PositiveNumber);
+  olympics::bench::SoccerBenchOptions soccer;
+  auto* socc = app.add_subcommand(
+      "soccer", "soccer: penalty kicks scored by policy, scripted goals per 10 min, 2v2 ticks/s");
+  socc->add_flag("--json", json, "print one JSON object instead of a table");
+  socc->add_option("--kicks", soccer.kicks, "penalty kicks per policy (seeds 1..N)")
+      ->check(CLI::PositiveNumber);
+  socc->add_option("--matches", soccer.matches, "scripted 1v1 and 2v2 matches (seeds 1..M)")
+      ->check(CLI::NonNegativeNumber);
+  socc->add_option("--half-s", soccer.half_s, "seconds per half of those matches")
+      ->check(CLI::PositiveNumber);
+  socc->add_option("--policies", soccer.policies, "penalty kickers (comma-separated)")
+      ->delimiter(',');
+  socc->add_flag("--no-speed{false}", soccer.speed, "skip the 2v2 ticks/s measurement");
+  socc->add_option("--seconds", soccer.seconds, "wall seconds per speed measurement")
+      ->check(CLI::PositiveNumber);
+  socc->add_option("--repeats", soccer.repeats, "interleaved repeats (median reported)")
       ->check(CLI::PositiveNumber);
   olympics::bench::CombatBenchOptions combat;
   auto* comb = app.add_subcommand(
@@ -149,6 +168,13 @@ int main(int argc, char** argv) {
       std::printf("%s\n", report.dump(2).c_str());
     else
       olympics::bench::print_combat_report(report);
+  }
+  if (*socc) {
+    auto report = olympics::bench::run_soccer_bench(soccer);
+    if (json)
+      std::printf("%s\n", report.dump(2).c_str());
+    else
+      olympics::bench::print_soccer_report(report);
   }
   if (*vect) {
     auto report = olympics::bench::run_vector_bench(vector);

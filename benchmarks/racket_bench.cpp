@@ -76,7 +76,7 @@ nlohmann::json run_racket_bench(const RacketBenchOptions& o) {
     sports::equipment::attach_equipment(players, sport == "tennis"
                                                      ? sports::racket::tennis_racket()
                                                      : sports::racket::table_tennis_paddle());
-    r["speed_1v1"] = speed_1v1(sport, players, o.seconds, o.repeats, /*ticks=*/300);
+    r["speed_1v1"] = speed_vs_bare(sport, players, o.seconds, o.repeats, /*ticks=*/300);
   }
   return report;
 }

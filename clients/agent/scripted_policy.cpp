@@ -5,11 +5,12 @@
 #include "scripted_boxing.h"
 #include "scripted_fencing.h"
 #include "scripted_racket.h"
+#include "scripted_soccer.h"
 
 namespace olympics::client {
 
 std::vector<std::string> ScriptedPolicy::sports() {
-  return {"tennis", "table_tennis", "fencing", "boxing"};
+  return {"tennis", "table_tennis", "fencing", "boxing", "soccer"};
 }
 
 void ScriptedPolicy::start(const MatchInfo& match) {
@@ -19,6 +20,8 @@ void ScriptedPolicy::start(const MatchInfo& match) {
     sport_policy_ = std::make_unique<ScriptedFencingPolicy>();
   else if (match.sport == "boxing")
     sport_policy_ = std::make_unique<ScriptedBoxingPolicy>();
+  else if (match.sport == "soccer")
+    sport_policy_ = std::make_unique<ScriptedSoccerPolicy>();
   else {
     std::string known;
     for (const auto& s : sports()) known += (known.empty() ? "" : ", ") + s;

@@ -17,8 +17,6 @@ const core::ModelSpec& player_model() {
 }
 
 constexpr double kKickerBehind_m = 2.0;  // the penalty kicker starts this far behind the ball
-constexpr double kAtRest_mps = 0.05;     // penalty: a touched ball slower than this...
-constexpr double kAtRestFor_s = 1.0;     // ...for this long has stopped
 constexpr double kSpin_limit = 100;      // rad/s, observation clamp
 
 }  // namespace
@@ -68,7 +66,6 @@ std::vector<RefereeCall> soccer_calls() {
           {"encroachment",
            "an opponent played a restart before the taking side: taken again "
            "(culprit_slot)"},
-          {"stopped", "penalty kick: the touched ball came to rest in the field"},
           {"stood_up", "a player down for the set time was stood up where it lay"},
           {"fall", "a player fell (body)"}};
 }
@@ -90,7 +87,7 @@ SoccerMatch::SoccerMatch(const SoccerConfig& config, const ModeSpec& mode, Layou
   }
   ball_ = std::make_unique<equipment::Ball>(scene().world(), equipment::soccer_ball(), spawn_);
   ball_->sense_contacts();
-  touched_.assign(slot_count(), 0);
+  touch_tick_.assign(slot_count(), -1);
   down_since_.assign(slot_count(), -1);
   root_before_.resize(slot_count());
   for (int s = 0; s < slot_count(); ++s) add_player(player_model(), {});
@@ -167,7 +164,7 @@ void SoccerMatch::after_physics_step(double) {
     if (!c.other || c.other->entity < 0) continue;
     for (int s = 0; s < slot_count(); ++s) {
       if (player(s).entity() != c.other->entity) continue;
-      touched_[s] = 1;
+      touch_tick_[s] = tick() + 1;  // the tick being stepped
       if (kind_ == SoccerMode::TeamPlay) referee_.touch(s, time());
       if (s == 0) kicked_ = true;
     }
@@ -190,7 +187,6 @@ RewardState SoccerMatch::reward_state(int slot) const {
 void SoccerMatch::remember_positions() {
   for (int s = 0; s < slot_count(); ++s) root_before_[s] = player(s).body_state(0).position;
   ball_before_ = ball_->position();
-  std::fill(touched_.begin(), touched_.end(), 0);
 }
 
 void SoccerMatch::stand_up_fallen() {
@@ -218,11 +214,9 @@ void SoccerMatch::settle_tick() {
 }
 
 void SoccerMatch::settle_penalty() {
-  const double dt = scene().settings().control_dt;
   int end = 0;
   const Crossed crossed = config_.field.crossed(ball_->position(), ball_->spec().radius, &end);
   const bool goal = crossed == Crossed::Goal && end == 1;
-  still_s_ = kicked_ && ball_->velocity().norm() < kAtRest_mps ? still_s_ + dt : 0;
   set_reward(0, penalty_kick_terms(reward_state(0), spawn_, goal));
   if (kind_ == SoccerMode::PenaltyKickKeeper)
     set_reward(1, goalkeeper_terms(reward_state(1), goal));
@@ -240,13 +234,10 @@ void SoccerMatch::settle_penalty() {
     e["line"] = crossed == Crossed::TouchLine ? "touch" : "goal";
     e["last_touch_slot"] = kicked_ ? 0 : -1;
     log(std::move(e));
-  } else if (still_s_ >= kAtRestFor_s) {
-    log(referee_event("stopped", time()));
   }
   outcome_.info["score"] = score_json();
   if (goal) return outcome_.end("goal", 0);
   if (crossed != Crossed::None) return outcome_.end("missed", keeper_wins);
-  if (still_s_ >= kAtRestFor_s) return outcome_.end("ball_stopped", keeper_wins);
 }
 
 void SoccerMatch::settle_team_play() {

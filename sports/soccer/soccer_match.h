@@ -5,8 +5,8 @@
 // Who touched the ball comes from its sensed contacts at the physics rate.
 //
 // Penalty kick: the ball on the spot `penalty_distance` from the goal at +x, the kicker 2 m
-// behind it; the episode ends with a goal, the ball out of play, the ball at rest after a touch,
-// or the time limit. Team play: the SoccerReferee's rules (goals, throw-ins, goal kicks,
+// behind it; the episode ends with a goal, the ball out of play or the time limit (the kicker may
+// touch the ball again; the reward's no_dribble term says what the seed thought of that). Team play: the SoccerReferee's rules (goals, throw-ins, goal kicks,
 // corners, kick-offs, halves); this class carries out its restarts: the ball on its spot, the
 // players back in their halves for a kick-off, opponents moved back from any other restart.
 #pragma once
@@ -48,8 +48,8 @@ class SoccerMatch : public SmplMatch {
   const equipment::Ball& ball() const { return *ball_; }
   const SoccerReferee& referee() const { return referee_; }
   const Field& field() const { return config_.field; }
-  // Whether a player touched the ball this tick, and which (the last one).
-  const std::vector<std::uint8_t>& touched_this_tick() const { return touched_; }
+  // Whether a player touched the ball in the last tick.
+  bool touched_this_tick(int slot) const { return touch_tick_[slot] == tick(); }
   // Where a player of `team` would stand to take (or face) a restart; the penalty kicker's start.
   Eigen::Vector3d penalty_spot() const { return spawn_; }
 
@@ -86,10 +86,9 @@ class SoccerMatch : public SmplMatch {
   Eigen::Vector3d spawn_ = Eigen::Vector3d::Zero();  // the ball's spot (penalty kick)
   std::vector<Eigen::Vector3d> root_before_;
   Eigen::Vector3d ball_before_ = Eigen::Vector3d::Zero();
-  std::vector<std::uint8_t> touched_;  // per slot, this tick
+  std::vector<int> touch_tick_;  // per slot: the last tick it touched the ball
   std::vector<double> down_since_;     // per slot: when it went down (stand_up)
   bool kicked_ = false;                // penalty: the kicker has touched the ball
-  double still_s_ = 0;                 // penalty: how long the touched ball has been at rest
   nlohmann::json goals_ = nlohmann::json::array();  // every goal, for the result
 };
 

@@ -63,10 +63,6 @@ SoccerConfig SoccerSport::config(const nlohmann::json& options) const {
     throw std::invalid_argument("soccer: goal_width " + std::to_string(c.field.goal_width) +
                                 " leaves no room beside the goal area on a field " +
                                 std::to_string(c.field.width) + " m wide; widen the field");
-  if (c.penalty_distance > c.field.half_length() - 1)
-    throw std::invalid_argument("soccer: penalty_distance " + std::to_string(c.penalty_distance) +
-                                " m puts the spot past the centre of a field " +
-                                std::to_string(c.field.length) + " m long; shorten it");
   return c;
 }
 
@@ -74,6 +70,11 @@ std::unique_ptr<SportMatch> SoccerSport::create(const MatchSettings& settings) c
   MatchSettings s = settings;
   const SoccerConfig c = config(s.options);
   const ModeSpec& mode = modes_.at(s.mode);
+  if (soccer_mode(mode.name) != SoccerMode::TeamPlay &&
+      c.penalty_distance > c.field.half_length() - 1)
+    throw std::invalid_argument("soccer: penalty_distance " + std::to_string(c.penalty_distance) +
+                                " m puts the spot past the centre of a field " +
+                                std::to_string(c.field.length) + " m long; shorten it");
   if (s.time_limit_s <= 0)
     s.time_limit_s = soccer_mode(mode.name) == SoccerMode::TeamPlay
                          ? c.rules.halves * c.rules.half_s

@@ -24,7 +24,7 @@ class SoccerSport : public Sport {
   // The match's configuration from a request's options (throws std::invalid_argument).
   SoccerConfig config(const nlohmann::json& options) const;
 
-  static constexpr double kPenaltyKickS = 15;  // a penalty kick's default time limit
+  static constexpr double kPenaltyKickS = 30;  // a penalty kick's default time limit
 
  private:
   ModeTable modes_;

@@ -1,0 +1,142 @@
+#include "soccer_bench.h"
+
+#include <cstdio>
+#include <map>
+
+#include "bench_support.h"
+#include "core/humanoid_assets.h"
+#include "policies.h"
+#include "registry.h"
+#include "soccer/soccer_match.h"
+
+namespace olympics::bench {
+namespace {
+
+// Plays one match of soccer with one policy per slot; calls `on_event` for every referee call.
+nlohmann::json play(const std::string& mode, std::uint64_t seed,
+                    const std::vector<std::string>& policies, const nlohmann::json& options,
+                    std::map<std::string, int>& calls, std::vector<int>& touched) {
+  const auto& sport = sports::sport_or_throw("soccer");
+  auto match = sport.create({mode, seed, 0.0, options});
+  const int n = match->slot_count();
+  std::vector<std::unique_ptr<client::Policy>> players;
+  for (int s = 0; s < n; ++s) {
+    players.push_back(client::make_policy(policies[s], 100 * seed + s));
+    players.back()->start(in_process_match_info("soccer", mode, *match));
+  }
+  std::vector<std::vector<float>> obs(n, std::vector<float>(match->obs_size())),
+      act(n, std::vector<float>(match->action_size()));
+  std::vector<std::span<const float>> actions(act.begin(), act.end());
+  touched.assign(n, 0);
+  const auto* soccer = dynamic_cast<const sports::soccer::SoccerMatch*>(match.get());
+  while (!match->outcome().match_over) {
+    for (int s = 0; s < n; ++s) {
+      match->observe(s, obs[s]);
+      players[s]->act(obs[s], act[s]);
+    }
+    match->step(actions);
+    for (int s = 0; s < n; ++s) touched[s] |= soccer->touched_this_tick(s);
+    for (const auto& e : match->outcome().info["events"]) ++calls[e["call"].get<std::string>()];
+  }
+  const auto& o = match->outcome();
+  return {{"reason", o.reason},
+          {"winner_team", o.winner_team},
+          {"scores", o.scores},
+          {"seconds", match->tick() / 30.0},
+          {"goals", o.info.value("goals", nlohmann::json::array())}};
+}
+
+nlohmann::json penalty_kicks(const std::string& policy, int kicks) {
+  int scored = 0, touched = 0;
+  double seconds_to_goal = 0;
+  std::map<std::string, int> calls, endings;
+  for (int k = 1; k <= kicks; ++k) {
+    std::vector<int> touch;
+    const auto r = play("penalty_kick", k, {policy}, {}, calls, touch);
+    const bool goal = r["reason"] == "goal";
+    scored += goal;
+    touched += touch[0];
+    if (goal) seconds_to_goal += r["seconds"].get<double>();
+    ++endings[r["reason"].get<std::string>()];
+  }
+  return {{"kicks", kicks},
+          {"scored", static_cast<double>(scored) / kicks},
+          {"touched", static_cast<double>(touched) / kicks},
+          {"falls", calls["fall"]},
+          {"mean_s_to_goal", scored ? seconds_to_goal / scored : 0.0},
+          {"endings", endings}};
+}
+
+nlohmann::json scripted_matches(const std::string& mode, int matches, double half_s) {
+  const int n = sports::sport_or_throw("soccer").modes().at(mode).slot_count();
+  std::map<std::string, int> calls;
+  int goals = 0, assists = 0, own_goals = 0;
+  double minutes = 0;
+  std::array<int, 2> wins{};
+  int draws = 0;
+  for (int m = 1; m <= matches; ++m) {
+    std::vector<int> touch;
+    const auto r = play(mode, m, std::vector<std::string>(n, "scripted"),
+                        {{"half_s", half_s}, {"falls", "stand_up"}}, calls, touch);
+    minutes += r["seconds"].get<double>() / 60;
+    for (const auto& g : r["goals"]) {
+      ++goals;
+      assists += g.value("assist_slot", -1) >= 0;
+      own_goals += g.value("own_goal", false);
+    }
+    const int w = r["winner_team"];
+    if (w >= 0)
+      ++wins[w];
+    else
+      ++draws;
+  }
+  return {{"matches", matches}, {"minutes", minutes},
+          {"goals", goals},     {"goals_per_10_min", minutes > 0 ? 10 * goals / minutes : 0.0},
+          {"assists", assists}, {"own_goals", own_goals},
+          {"wins", wins},       {"draws", draws},
+          {"calls", calls}};
+}
+
+}  // namespace
+
+nlohmann::json run_soccer_bench(const SoccerBenchOptions& o) {
+  nlohmann::json report = {{"penalty_kick", nlohmann::json::object()}};
+  for (const auto& p : o.policies) report["penalty_kick"][p] = penalty_kicks(p, o.kicks);
+  for (const char* mode : {"1v1", "2v2"})
+    report["scripted_" + std::string(mode)] = scripted_matches(mode, o.matches, o.half_s);
+  if (o.speed) {
+    static const core::ModelSpec smpl = core::load_humanoid(core::HumanoidKind::Smpl);
+    report["speed_2v2"] = speed_vs_bare("soccer", smpl, o.seconds, o.repeats, 45, "2v2");
+  }
+  return report;
+}
+
+void print_soccer_report(const nlohmann::json& r) {
+  for (const auto& [policy, k] : r["penalty_kick"].items()) {
+    std::printf(
+        "penalty kick, %-9s %d kicks: scored %.0f%%, touched %.0f%%, falls %d, %.1f s to "
+        "a goal; endings %s\n",
+        policy.c_str(), k["kicks"].get<int>(), 100 * k["scored"].get<double>(),
+        100 * k["touched"].get<double>(), k["falls"].get<int>(), k["mean_s_to_goal"].get<double>(),
+        k["endings"].dump().c_str());
+  }
+  for (const char* mode : {"1v1", "2v2"}) {
+    const auto& m = r["scripted_" + std::string(mode)];
+    std::printf(
+        "scripted %s, %d matches, %.1f min: %d goals (%.1f per 10 min), assists %d, own "
+        "goals %d, wins %d-%d, draws %d\n  calls %s\n",
+        mode, m["matches"].get<int>(), m["minutes"].get<double>(), m["goals"].get<int>(),
+        m["goals_per_10_min"].get<double>(), m["assists"].get<int>(), m["own_goals"].get<int>(),
+        m["wins"][0].get<int>(), m["wins"][1].get<int>(), m["draws"].get<int>(),
+        m["calls"].dump().c_str());
+  }
+  if (!r.contains("speed_2v2")) return;
+  const auto& v = r["speed_2v2"];
+  std::printf(
+      "2v2 ticks/s on one core (zero actions, first %d ticks): match %.0f, bare physics of "
+      "four humanoids %.0f, ratio %.2f\n",
+      v["ticks_per_match"].get<int>(), v["match_ticks_per_s"].get<double>(),
+      v["bare_physics_ticks_per_s"].get<double>(), v["ratio"].get<double>());
+}
+
+}  // namespace olympics::bench

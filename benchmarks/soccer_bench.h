@@ -1,0 +1,27 @@
+// Soccer figures, the yardsticks learned players must beat: penalty kicks with fixed seeds
+// (1..N) for scripted, zero and random (fraction scored, fraction that touched the ball, falls,
+// how they ended); goals per 10 minutes of scripted-vs-scripted 1v1 and 2v2 matches (with
+// scorers, assists, own goals, restarts); and 2v2 ticks/s (four humanoids and the ball) against
+// the bare physics of four humanoids, measured interleaved.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace olympics::bench {
+
+struct SoccerBenchOptions {
+  int kicks = 100;      // penalty kicks per policy (seeds 1..N)
+  int matches = 3;      // scripted matches per team mode (seeds 1..N)
+  double half_s = 120;  // of each match (two halves)
+  std::vector<std::string> policies = {"scripted", "zero", "random"};
+  double seconds = 2;  // wall seconds per speed measurement
+  int repeats = 3;
+  bool speed = true;
+};
+
+nlohmann::json run_soccer_bench(const SoccerBenchOptions& options);
+void print_soccer_report(const nlohmann::json& report);
+
+}  // namespace olympics::bench
