@@ -25,8 +25,9 @@ void print_calls(const olympics::client::Observation& obs) try {
   if (obs.info.empty()) return;
   const auto info = nlohmann::json::parse(obs.info, nullptr, false);
   if (!info.is_object() || !info.contains("events")) return;
-  static const std::set<std::string> decisions = {"point", "let",      "halt",      "knockdown",
-                                                  "up",    "knockout", "round_end", "round_start"};
+  static const std::set<std::string> decisions = {
+      "point",       "let",  "halt", "knockdown", "up",       "knockout",  "round_end",
+      "round_start", "goal", "out",  "restart",   "kick_off", "half_time", "encroachment"};
   const std::string score = info.contains("score") ? info["score"].value("text", "") : "";
   for (const auto& e : info["events"]) {
     const std::string call = e.value("call", "");
@@ -37,7 +38,10 @@ void print_calls(const olympics::client::Observation& obs) try {
     else if (e.contains("slot"))
       line += " slot " + std::to_string(e["slot"].get<int>());
     if (e.contains("round")) line += " round " + std::to_string(e["round"].get<int>());
-    if (e.contains("reason")) line += " (" + e["reason"].get<std::string>() + ")";
+    if (e.contains("team") && !e.contains("slot"))
+      line += " team " + std::to_string(e["team"].get<int>());
+    for (const char* what : {"reason", "kind", "line"})
+      if (e.contains(what)) line += " (" + e[what].get<std::string>() + ")";
     if (e.contains("card_0"))
       line += " card " + std::to_string(e["card_0"].get<int>()) + "-" +
               std::to_string(e["card_1"].get<int>());

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Makes docs/screenshots/<sport>.png: a short scripted 1v1 of each sport on a real server,
 # exported with `olympics-server view --export`, one frame captured by headless Chromium.
-# Usage: tests/viewer/make_screenshots.sh [build/bin] [frame]
+# Usage: [SPORTS="soccer ..."] tests/viewer/make_screenshots.sh [build/bin] [frame]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 bin=${1:-build/bin}
@@ -13,7 +13,7 @@ url="udpm://239.255.76.67:$((26000 + $$ % 9000))?ttl=0&recv_buf_size=4194304"
 server=$!
 trap 'kill $server 2>/dev/null; wait $server 2>/dev/null || true' EXIT
 mkdir -p docs/screenshots
-for sport in tennis table_tennis fencing boxing sandbox; do
+for sport in ${SPORTS:-tennis table_tennis fencing boxing sandbox soccer}; do
   policy=scripted
   [ "$sport" = sandbox ] && policy=random   # no scripted player for the test sport
   pids=()
