@@ -50,8 +50,8 @@ class SoccerMatch : public SmplMatch {
   const Field& field() const { return config_.field; }
   // Whether a player touched the ball in the last tick.
   bool touched_this_tick(int slot) const { return touch_tick_[slot] == tick(); }
-  // Where a player of `team` would stand to take (or face) a restart; the penalty kicker's start.
-  Eigen::Vector3d penalty_spot() const { return spawn_; }
+  // Where the ball starts: the penalty spot, or the centre spot in team play.
+  Eigen::Vector3d ball_spot() const { return spawn_; }
 
  private:
   void write_task_observation(int slot, const HeadingFrame& frame,
