@@ -17,7 +17,7 @@ const core::ModelSpec& player_model() {
 }
 
 constexpr double kKickerBehind_m = 2.0;  // the penalty kicker starts this far behind the ball
-constexpr double kSpin_limit = 100;      // rad/s, observation clamp
+constexpr double kSpinLimit = 100;       // rad/s, observation clamp
 
 }  // namespace
 
@@ -166,7 +166,7 @@ void SoccerMatch::after_physics_step(double) {
       if (player(s).entity() != c.other->entity) continue;
       touch_tick_[s] = tick() + 1;  // the tick being stepped
       if (kind_ == SoccerMode::TeamPlay) referee_.touch(s, time());
-      if (s == 0) kicked_ = true;
+      last_toucher_ = s;
     }
   }
 }
@@ -232,7 +232,7 @@ void SoccerMatch::settle_penalty() {
   } else if (crossed != Crossed::None) {
     nlohmann::json e = referee_event("out", time());
     e["line"] = crossed == Crossed::TouchLine ? "touch" : "goal";
-    e["last_touch_slot"] = kicked_ ? 0 : -1;
+    e["last_touch_slot"] = last_toucher_;
     log(std::move(e));
   }
   outcome_.info["score"] = score_json();
@@ -323,7 +323,7 @@ void SoccerMatch::write_task_observation(int slot, const HeadingFrame& frame,
   out.begin("ball")
       .put(frame.point(ball_->position()))
       .put(frame.vector(ball_->velocity()))
-      .put_clamped(frame.vector(ball_->angular_velocity()), kSpin_limit);
+      .put_clamped(frame.vector(ball_->angular_velocity()), kSpinLimit);
   out.begin("goals")
       .put(frame.point(config_.field.goal_centre(d)))
       .put(frame.point(config_.field.goal_centre(-d)));

@@ -6,9 +6,10 @@
 //
 // Penalty kick: the ball on the spot `penalty_distance` from the goal at +x, the kicker 2 m
 // behind it; the episode ends with a goal, the ball out of play or the time limit (the kicker may
-// touch the ball again; the reward's no_dribble term says what the seed thought of that). Team play: the SoccerReferee's rules (goals, throw-ins, goal kicks,
-// corners, kick-offs, halves); this class carries out its restarts: the ball on its spot, the
-// players back in their halves for a kick-off, opponents moved back from any other restart.
+// touch the ball again; the reward's no_dribble term says what the seed thought of that). Team
+// play: the SoccerReferee's rules (goals, throw-ins, goal kicks, corners, kick-offs, halves); this
+// class carries out its restarts: the ball on its spot, the players back in their halves for a
+// kick-off, opponents moved back from any other restart.
 #pragma once
 
 #include <memory>
@@ -86,9 +87,9 @@ class SoccerMatch : public SmplMatch {
   Eigen::Vector3d spawn_ = Eigen::Vector3d::Zero();  // the ball's spot (penalty kick)
   std::vector<Eigen::Vector3d> root_before_;
   Eigen::Vector3d ball_before_ = Eigen::Vector3d::Zero();
-  std::vector<int> touch_tick_;  // per slot: the last tick it touched the ball
-  std::vector<double> down_since_;     // per slot: when it went down (stand_up)
-  bool kicked_ = false;                // penalty: the kicker has touched the ball
+  std::vector<int> touch_tick_;                     // per slot: the last tick it touched the ball
+  std::vector<double> down_since_;                  // per slot: when it went down (stand_up)
+  int last_toucher_ = -1;                           // penalty: the slot that touched the ball last
   nlohmann::json goals_ = nlohmann::json::array();  // every goal, for the result
 };
 
