@@ -24,12 +24,6 @@ const core::ModelSpec& boxer_model(bool both_gloves) {
   return both_gloves ? two : one;
 }
 
-namespace {
-
-double tenths(double x) { return std::round(x * 10) / 10; }
-
-}  // namespace
-
 bool from_front_or_side(const Eigen::Vector3d& normal, const Eigen::Quaterniond& defender) {
   Eigen::Vector3d forward = defender * Eigen::Vector3d::UnitX();
   Eigen::Vector3d n = normal;

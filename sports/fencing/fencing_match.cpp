@@ -11,8 +11,6 @@
 namespace olympics::sports::fencing {
 namespace {
 
-double tenths(double x) { return std::round(x * 10) / 10; }
-
 // A tip held on a target is one hit, not one per physics step.
 constexpr double kHitRefractoryS = 0.1;
 

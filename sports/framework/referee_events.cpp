@@ -13,6 +13,8 @@ bool ends_with(const std::string& s, const std::string& tail) {
 
 }  // namespace
 
+double tenths(double x) { return std::round(x * 10) / 10; }
+
 nlohmann::json referee_event(const std::string& call, double t, int slot) {
   nlohmann::json e = {{"call", call}, {"t", milliseconds(t)}};
   if (slot >= 0) e["slot"] = slot;

@@ -19,6 +19,9 @@
 
 namespace olympics::sports {
 
+// A detail rounded to a tenth (a force in N, a time in s, a spot in m), as events record them.
+double tenths(double x);
+
 // A call at `t` seconds (slot -1: no particular player); add details before logging it.
 nlohmann::json referee_event(const std::string& call, double t, int slot = -1);
 
