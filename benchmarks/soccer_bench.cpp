@@ -12,7 +12,8 @@
 namespace olympics::bench {
 namespace {
 
-// Plays one match of soccer with one policy per slot; calls `on_event` for every referee call.
+// Plays one match of soccer with one policy per slot: counts every referee call in `calls` and
+// which slots touched the ball in `touched`; returns how it ended and its goals.
 nlohmann::json play(const std::string& mode, std::uint64_t seed,
                     const std::vector<std::string>& policies, const nlohmann::json& options,
                     std::map<std::string, int>& calls, std::vector<int>& touched) {

@@ -14,7 +14,7 @@ namespace olympics::sports::equipment {
 
 class FastBallGuard {
  public:
-  explicit FastBallGuard(double ball_radius) : probe_(ball_radius), radius_(ball_radius) {}
+  explicit FastBallGuard(double ball_radius) : probe_(ball_radius) {}
 
   // Call before every physics step of `dt` (after the ball's forces are set). Returns whether
   // the ball was moved to a contact.
@@ -22,7 +22,6 @@ class FastBallGuard {
 
  private:
   BodyProbe probe_;
-  double radius_;
 };
 
 }  // namespace olympics::sports::equipment

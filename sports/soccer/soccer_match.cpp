@@ -5,11 +5,11 @@
 #include <stdexcept>
 
 #include "core/humanoid_assets.h"
+#include "core/state_hash.h"
+#include "framework/jittered_start.h"
 
 namespace olympics::sports::soccer {
 namespace {
-
-double tenths(double x) { return std::round(x * 10) / 10; }
 
 const core::ModelSpec& player_model() {
   static const core::ModelSpec spec = core::load_humanoid(core::HumanoidKind::Smpl);
@@ -107,9 +107,7 @@ SoccerMatch::SoccerMatch(const SoccerConfig& config, const ModeSpec& mode, Layou
 }
 
 core::RootPlacement SoccerMatch::placement(const Eigen::Vector2d& at, int facing) {
-  std::uniform_real_distribution<double> u(-1, 1);
-  const double along = u(rng_), across = u(rng_), turn = u(rng_);
-  return {{at.x() + 0.1 * along, at.y() + 0.1 * across, 0}, (facing > 0 ? 0.0 : M_PI) + 0.1 * turn};
+  return jittered_start(at, facing > 0 ? 0.0 : M_PI, rng_);
 }
 
 int SoccerMatch::attack(int slot) const {
@@ -144,8 +142,7 @@ void SoccerMatch::clear_restart_area(const Restart& r) {
     if (team_of(s) == r.team) continue;
     const Eigen::Vector2d root = player(s).body_state(0).position.head<2>();
     if ((root - r.spot).norm() >= keep) continue;
-    const Eigen::Vector2d own_goal(-attack(s) * config_.field.half_length(), 0);
-    Eigen::Vector2d away = own_goal - r.spot;
+    Eigen::Vector2d away = config_.field.goal_centre(-attack(s)).head<2>() - r.spot;
     away = away.norm() > 1e-6 ? Eigen::Vector2d(away.normalized()) : Eigen::Vector2d(-attack(s), 0);
     const Eigen::Vector2d at = r.spot + (keep + 0.3) * away;
     const Eigen::Vector2d look = r.spot - at;
@@ -223,17 +220,11 @@ void SoccerMatch::settle_penalty() {
   const int keeper_wins = kind_ == SoccerMode::PenaltyKickKeeper ? 1 : -1;
   if (goal) {
     outcome_.scores[0] = 1;
-    nlohmann::json e = referee_event("goal", time(), 0);
-    e["team"] = 0;
-    e["assist_slot"] = -1;
-    e["own_goal"] = false;
-    log(std::move(e));
-    goals_.push_back({{"team", 0}, {"scorer_slot", 0}, {"t", tenths(time())}});
+    GoalCall kick;  // the kicker's (no assist in a penalty)
+    kick.team = 0, kick.scorer = 0;
+    record_goal(kick);
   } else if (crossed != Crossed::None) {
-    nlohmann::json e = referee_event("out", time());
-    e["line"] = crossed == Crossed::TouchLine ? "touch" : "goal";
-    e["last_touch_slot"] = last_toucher_;
-    log(std::move(e));
+    record_out(crossed == Crossed::TouchLine ? "touch" : "goal", last_toucher_);
   }
   outcome_.info["score"] = score_json();
   if (goal) return outcome_.end("goal", 0);
@@ -248,35 +239,41 @@ void SoccerMatch::settle_team_play() {
     const int goal = scoring < 0 ? 0 : (team_of(s) == scoring ? 1 : -1);
     set_reward(s, team_play_terms(reward_state(s), goal));
   }
+  const auto& score = referee_.score();
+  outcome_.scores = {static_cast<float>(score[0]), static_cast<float>(score[1])};
   if (stop) {
     log_stoppage(*stop);
     carry_out(*stop);
   }
-  const auto& score = referee_.score();
-  outcome_.scores = {static_cast<float>(score[0]), static_cast<float>(score[1])};
   outcome_.info["score"] = score_json();
+}
+
+void SoccerMatch::record_goal(const GoalCall& g) {
+  nlohmann::json e = referee_event("goal", time(), g.scorer);
+  e["team"] = g.team;
+  e["assist_slot"] = g.assist;
+  e["own_goal"] = g.own_goal;
+  log(std::move(e));
+  goals_.push_back({{"team", g.team},
+                    {"scorer_slot", g.scorer},
+                    {"assist_slot", g.assist},
+                    {"own_goal", g.own_goal},
+                    {"t", tenths(time())},
+                    {"score", score_json()["text"]}});
+}
+
+void SoccerMatch::record_out(const std::string& line, int last_touch) {
+  nlohmann::json e = referee_event("out", time());
+  e["line"] = line;
+  e["last_touch_slot"] = last_touch;
+  log(std::move(e));
 }
 
 void SoccerMatch::log_stoppage(const Stoppage& s) {
   if (s.goal) {
-    const GoalCall& g = *s.goal;
-    nlohmann::json e = referee_event("goal", time(), g.scorer);
-    e["team"] = g.team;
-    e["assist_slot"] = g.assist;
-    e["own_goal"] = g.own_goal;
-    log(std::move(e));
-    const auto& score = referee_.score();
-    goals_.push_back({{"team", g.team},
-                      {"scorer_slot", g.scorer},
-                      {"assist_slot", g.assist},
-                      {"own_goal", g.own_goal},
-                      {"t", tenths(time())},
-                      {"score", std::to_string(score[0]) + "-" + std::to_string(score[1])}});
+    record_goal(*s.goal);
   } else if (s.reason == "out") {
-    nlohmann::json e = referee_event("out", time());
-    e["line"] = s.line;
-    e["last_touch_slot"] = s.last_touch;
-    log(std::move(e));
+    record_out(s.line, s.last_touch);
   } else if (s.reason == "half_time") {
     nlohmann::json e = referee_event("half_time", time());
     e["half"] = referee_.half();
@@ -362,11 +359,7 @@ void SoccerMatch::write_task_observation(int slot, const HeadingFrame& frame,
 }
 
 void SoccerMatch::extra_state(std::vector<double>& values) const {
-  const dBodyID b = ball_->body();
-  values.insert(values.end(), dBodyGetPosition(b), dBodyGetPosition(b) + 3);
-  values.insert(values.end(), dBodyGetQuaternion(b), dBodyGetQuaternion(b) + 4);
-  values.insert(values.end(), dBodyGetLinearVel(b), dBodyGetLinearVel(b) + 3);
-  values.insert(values.end(), dBodyGetAngularVel(b), dBodyGetAngularVel(b) + 3);
+  core::append_body_state(ball_->body(), values);
 }
 
 void SoccerMatch::describe_scene(SceneBuilder& scene) const {

@@ -69,6 +69,9 @@ class SoccerMatch : public SmplMatch {
   void settle_team_play();
   void carry_out(const Stoppage& s);
   void log_stoppage(const Stoppage& s);
+  // The goal and out calls, and the goal's line in the result's "goals" (scores already counted).
+  void record_goal(const GoalCall& g);
+  void record_out(const std::string& line, int last_touch);
   void kick_off_positions(int kicking_team);
   void clear_restart_area(const Restart& r);
   void stand_up_fallen();
