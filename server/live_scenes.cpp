@@ -11,15 +11,18 @@ void LiveScene::publish_header(std::string records) {
 }
 
 void LiveScene::publish_tick(int tick, std::string records) {
+  // Keep the newest events record for viewers who join later (it carries the score); found
+  // before taking the lock that viewers wait on.
+  std::string events;
+  for (size_t at = 0; at + 5 <= records.size();) {
+    std::uint32_t size;
+    std::memcpy(&size, records.data() + at + 1, 4);
+    if (records[at] == 'E') events = records.substr(at, 5 + size);
+    at += 5 + size;
+  }
   {
     std::lock_guard lock(mutex_);
-    // Keep the newest events record for viewers who join later (it carries the score).
-    for (size_t at = 0; at + 5 <= records.size();) {
-      std::uint32_t size;
-      std::memcpy(&size, records.data() + at + 1, 4);
-      if (records[at] == 'E') last_events_ = records.substr(at, 5 + size);
-      at += 5 + size;
-    }
+    if (!events.empty()) last_events_ = std::move(events);
     recent_.push_back(std::move(records));
     ++next_seq_;
     tick_ = tick;

@@ -218,9 +218,8 @@ std::string scene_track_for(const std::string& file) {
 
 int view(const std::string& file, const std::string& host, int port, const std::string& export_to) {
   const std::string scene = scene_track_for(file);
-  std::ifstream in(scene, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const server::SceneTrack track = server::decode_scene(server::read_scene_file(scene));
+  const std::string bytes = server::read_packed_scene_file(scene);
+  const server::SceneTrack track = server::decode_scene(server::unpack_scene(bytes, scene));
   std::printf("%s: %s %s, %zu frames (%.1f s)\n", scene.c_str(),
               track.header.value("sport", "?").c_str(), track.header.value("mode", "?").c_str(),
               track.frames.size(), track.frames.size() / double(core::kControlHz));

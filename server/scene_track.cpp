@@ -155,12 +155,19 @@ std::string SceneFileWriter::close() {
   return path_;
 }
 
-std::string read_scene_file(const std::string& path) {
+std::string read_packed_scene_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read the scene track " + path);
   std::stringstream ss;
   ss << in.rdbuf();
-  const std::string packed = ss.str();
+  return ss.str();
+}
+
+std::string read_scene_file(const std::string& path) {
+  return unpack_scene(read_packed_scene_file(path), path);
+}
+
+std::string unpack_scene(std::string_view packed, const std::string& path) {
   ZSTD_DCtx* z = ZSTD_createDCtx();
   std::string out;
   std::vector<char> buf(ZSTD_DStreamOutSize());

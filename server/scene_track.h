@@ -83,6 +83,10 @@ struct SceneTrack {
 };
 // Throws std::runtime_error naming what is wrong.
 std::string read_scene_file(const std::string& path);  // the decompressed records
+// A scene track's file as it is on disk (compressed), and its records decompressed (`name` for
+// errors).
+std::string read_packed_scene_file(const std::string& path);
+std::string unpack_scene(std::string_view packed, const std::string& name);
 SceneTrack decode_scene(std::string_view records);
 
 }  // namespace olympics::server
