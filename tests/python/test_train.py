@@ -91,6 +91,40 @@ class TrainTest(unittest.TestCase):
         self.assertEqual(s["touch_rate"], 0.5)  # the first ended episode touched, the second not
         self.assertEqual(ep.summary(["racket", "contact"]), {"episodes": 0})
 
+    def test_win_reward_lands_on_the_last_tick_of_each_ended_match(self):
+        args = run_args(os.path.join(self.dir, "win"), "--win-reward", "5", "--opponent",
+                        "frozen", "--hidden", "16")
+        trainer = train.Trainer(args, spec=dict(TOY_SPEC, slot_teams=[0, 1]))
+
+        class Results:  # the results come in two batches, as they would over the network
+            batches = [[{"match_id": "won", "winner_team": 0, "slot_team": [0, 1]},
+                        {"match_id": "lost", "winner_team": 1, "slot_team": [0, 1]}],
+                       [{"match_id": "drawn", "winner_team": -1, "slot_team": [0, 1]}]]
+
+            def results(self):
+                return self.batches.pop(0) if self.batches else []
+        rewards = np.zeros((4, 2, 1), np.float32)  # [tick, env, learning slot]
+        trainer.credit_outcomes(Results(), {"won": (1, 0), "lost": (3, 1), "drawn": (2, 0)},
+                                rewards)
+        self.assertEqual(rewards[1, 0, 0], 5.0)
+        self.assertEqual(rewards[3, 1, 0], -5.0)
+        self.assertEqual(float(np.abs(rewards).sum()), 10.0)  # the draw earned nothing
+        self.assertEqual(trainer.outcomes_missed, 0)
+        self.assertEqual(len(trainer.results), 3)  # kept for the metrics row's win rate
+        trainer.credit_outcomes(Results(), {"never": (0, 0)}, rewards)  # its result is lost
+        self.assertEqual(trainer.outcomes_missed, 1)
+        self.assertEqual(float(np.abs(rewards).sum()), 10.0)
+
+    def test_term_weights_override_the_sports_by_name(self):
+        terms = [{"name": "facing", "weight": 0.1}, {"name": "strike", "weight": 0.6},
+                 {"name": "point", "weight": 1.0}]
+        self.assertIsNone(train.term_weights(terms, ""))
+        np.testing.assert_allclose(train.term_weights(terms, "facing=0, point=3"), [0.0, 0.6, 3.0])
+        with self.assertRaises(SystemExit) as bad:
+            train.term_weights(terms, "facing=0,punch=2")
+        self.assertIn("punch", str(bad.exception))
+        self.assertIn("facing, strike, point", str(bad.exception))
+
     def test_frozen_self_play_plays_a_copy_refreshed_every_swap(self):
         args = run_args(os.path.join(self.dir, "frozen"), "--samples", "2048", "--num-envs", "4",
                         "--horizon", "64", "--hidden", "16", "--opponent", "frozen",

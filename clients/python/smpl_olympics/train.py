@@ -70,6 +70,12 @@ def parse_args(argv=None):
     p.add_argument("--opponent", default="",
                    help="team 1's policy: frozen, scripted, zero, random, mlp:FILE "
                         "(none: every slot plays the shared policy)")
+    p.add_argument("--win-reward", type=float, default=0.0,
+                   help="added to the last reward of a match the learner's team won (minus: "
+                        "lost), from the server's result; 0: the sport's rewards only")
+    p.add_argument("--term-weights", default="",
+                   help="NAME=W,...: train on the reward terms with these weights instead of the "
+                        "sport's (terms not named keep theirs); e.g. facing=0,velocity=0")
     p.add_argument("--swap-every", type=int, default=10, help="--opponent frozen: refresh period")
     p.add_argument("--init", help="warm start from a run folder (blocks matched by name)")
     p.add_argument("--seed", type=int, default=0)
@@ -86,6 +92,20 @@ def parse_args(argv=None):
         if getattr(args, key) is None:
             setattr(args, key, value)
     return args
+
+
+def term_weights(rewards, spec):
+    """--term-weights "NAME=W,..." over the sport's weights (a vector in term order), or None."""
+    if not spec:
+        return None
+    weights = {t["name"]: float(t.get("weight", 1.0)) for t in rewards}
+    for item in spec.split(","):
+        name, _, value = item.partition("=")
+        if name.strip() not in weights or not value:
+            sys.exit(f"--term-weights: '{item}' is not NAME=WEIGHT with NAME one of this mode's "
+                     f"terms: {', '.join(weights)}")
+        weights[name.strip()] = float(value)
+    return np.array([weights[t["name"]] for t in rewards], np.float32)
 
 
 def find_program(name):
@@ -132,6 +152,7 @@ class Trainer:
         self.others = [s for s in range(len(self.teams)) if s not in self.learning]
         self.obs_size, self.action_size = spec["obs_size"], spec["action_size"]
         self.term_names = [t["name"] for t in spec["rewards"]]
+        self.term_weights = term_weights(spec["rewards"], args.term_weights)
         torch.set_num_threads(args.torch_threads)
         torch.manual_seed(args.seed)
         self.generator = torch.Generator().manual_seed(args.seed)
@@ -143,6 +164,8 @@ class Trainer:
         self.norm = RunningNorm(self.obs_size)
         self.iteration, self.samples, self.wall = 0, 0, 0.0
         self.frozen = None  # (model, norm) of --opponent frozen
+        self.results = []  # results of ended matches not yet in a metrics row
+        self.outcomes_missed = 0  # --win-reward: ended matches whose result did not come
         self.ppo = PpoSettings(lr=args.lr, epochs=args.epochs, minibatch=args.minibatch,
                                clip=args.clip, target_kl=args.target_kl)
 
@@ -232,7 +255,9 @@ class Trainer:
                        "wall_s": round(self.wall, 2),
                        "samples_per_s": len(batch["obs"]) / (time.monotonic() - started),
                        "std": float(self.model.log_std.exp().mean()), **stats,
-                       **ep.summary(self.term_names), **self.scores(env)}
+                       **ep.summary(self.term_names), **self.scores()}
+                if a.win_reward:
+                    row["outcomes_missed"] = self.outcomes_missed
                 log.write(row)
                 if not a.quiet:
                     TrainingLog.progress(row, a.samples)
@@ -262,7 +287,9 @@ class Trainer:
         a, L = self.args, len(self.learning)
         T, N = a.horizon, a.num_envs
         buf = {k: [] for k in ("obs", "actions", "log_probs", "values", "rewards", "dones")}
-        for _ in range(T):
+        ended = {}  # match id -> (tick of this iteration, environment) of the matches that ended
+        for t in range(T):
+            ids = [env.match_id(e) for e in range(N)] if a.win_reward else None
             obs = self.norm.normalise(raw[:, self.learning])  # [N, L, obs]
             act, logp, value = self.model.act(torch.as_tensor(obs))
             act = act.numpy()
@@ -273,7 +300,10 @@ class Trainer:
             if self.others:
                 actions[:, self.others] = self.opponent_actions(raw)
             next_raw, rewards, _, truncated, infos = env.step(actions)
-            r = rewards[:, self.learning].astype(np.float32)
+            if self.term_weights is None:
+                r = rewards[:, self.learning].astype(np.float32)
+            else:
+                r = (infos["reward_terms"][:, self.learning] @ self.term_weights).astype(np.float32)
             done = np.repeat(np.asarray(infos["episode_over"], np.float32)[:, None], L, axis=1)
             for e in np.nonzero(infos["episode_over"])[0]:
                 # A match cut by the time limit is not an end: bootstrap from its last state.
@@ -283,6 +313,9 @@ class Trainer:
                         with torch.no_grad():
                             r[e, i] += a.gamma * float(self.model.value(torch.as_tensor(final)))
                 self.restart_helpers(e)
+                if ids is not None:
+                    ended[ids[e]] = (t, e)
+            self.results.extend(env.results())
             ep.add(rewards[:, self.learning], infos["reward_terms"][:, self.learning],
                    infos["episode_over"])
             buf["obs"].append(obs)
@@ -297,16 +330,38 @@ class Trainer:
             last = self.model.value(torch.as_tensor(self.norm.normalise(raw[:, self.learning])))
         last = last.numpy()
         arr = {k: np.asarray(v, np.float32) for k, v in buf.items()}
+        if ended:
+            self.credit_outcomes(env, ended, arr["rewards"])
         adv, ret = gae(arr["rewards"], arr["values"], arr["dones"], last, a.gamma, a.lam)
         flat = lambda x, *tail: x.reshape(-1, *tail)  # noqa: E731
         return {"obs": flat(arr["obs"], self.obs_size), "actions": flat(arr["actions"], self.action_size),
                 "log_probs": flat(arr["log_probs"]), "advantages": flat(adv),
                 "returns": flat(ret)}, raw
 
-    def scores(self, env):
+    def credit_outcomes(self, env, ended, rewards):
+        """--win-reward: +W (won) or -W (lost) on the last tick of each learning slot whose match
+        ended in this iteration. A result comes a round trip after the match's last tick; one
+        that has not come within 0.5 s gets nothing (counted in `outcomes_missed`)."""
+        give_up = time.monotonic() + 0.5
+        while True:
+            for r in self.results:
+                if r["match_id"] in ended and r["winner_team"] >= 0:
+                    t, e = ended[r["match_id"]]
+                    for i, s in enumerate(self.learning):
+                        won = r["slot_team"][s] == r["winner_team"]
+                        rewards[t, e, i] += self.args.win_reward if won else -self.args.win_reward
+            for r in self.results:
+                ended.pop(r["match_id"], None)
+            if not ended or time.monotonic() > give_up:
+                break
+            time.sleep(0.002)
+            self.results.extend(env.results())
+        self.outcomes_missed += len(ended)
+
+    def scores(self):
         """The sport's own figure from the matches that ended: the learning team's score (ball
         return: balls returned in; a match: points), and its win rate against an opponent."""
-        results = env.results()
+        results, self.results = self.results, []
         if not results:
             return {}
         if self.shared:

@@ -19,7 +19,7 @@ class TrainingLog:
         self.fields = (["iteration", "samples", "wall_s", "samples_per_s", "episodes",
                         "episode_return", "episode_length", "score", "win_rate", "touch_rate"] +
                        [f"term_{n}" for n in term_names] +
-                       ["policy_loss", "value_loss", "approx_kl", "update_steps", "std"])
+                       ["policy_loss", "value_loss", "approx_kl", "update_steps", "std", "outcomes_missed"])
         rows = read_metrics(run_dir) if resume and os.path.exists(self.path) else []
         kept = [r for r in rows if until_iteration is None or int(r["iteration"]) <= until_iteration]
         if not rows or list(rows[0]) != self.fields or len(kept) != len(rows):

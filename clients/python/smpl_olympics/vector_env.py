@@ -94,6 +94,10 @@ class OlympicsVectorEnv:
         terminations, truncations, infos), rows in env_ids order."""
         return self._unpack(self._client.recv(int(min_ready), timeout_s))
 
+    def match_id(self, env):
+        """The id of the match environment `env` plays now (its result carries it)."""
+        return self._client.match_id(int(env))
+
     def results(self):
         """Results of the matches that ended since the last call (dicts, as env.result)."""
         return self._client.take_results() if self._client is not None else []
