@@ -13,7 +13,8 @@ namespace olympics::sports {
   X(table_tennis)          \
   X(fencing)               \
   X(boxing)                \
-  X(soccer)
+  X(soccer)                \
+  X(basketball)
 
 #define OLYMPICS_DECLARE_SPORT(name) std::unique_ptr<Sport> make_##name();
 OLYMPICS_SPORTS(OLYMPICS_DECLARE_SPORT)

@@ -52,15 +52,38 @@ LayoutBlock smpl_action_block() {
           "23 joints x (x, y, z) hinges in body order, L_Hip first"};
 }
 
-Layout smpl_layout(const std::vector<LayoutBlock>& task, std::vector<RewardTerm> rewards,
-                   std::vector<RefereeCall> calls) {
+namespace {
+
+Layout humanoid_layout(LayoutBlock self, LayoutBlock action, const std::vector<LayoutBlock>& task,
+                       std::vector<RewardTerm> rewards, std::vector<RefereeCall> calls) {
   Layout l;
-  l.observation = {smpl_self_observation_block()};
+  l.observation = {std::move(self)};
   l.observation.insert(l.observation.end(), task.begin(), task.end());
-  l.action = {smpl_action_block()};
+  l.action = {std::move(action)};
   l.rewards = std::move(rewards);
   l.calls = std::move(calls);
   return l;
+}
+
+}  // namespace
+
+Layout smpl_layout(const std::vector<LayoutBlock>& task, std::vector<RewardTerm> rewards,
+                   std::vector<RefereeCall> calls) {
+  return humanoid_layout(smpl_self_observation_block(), smpl_action_block(), task,
+                         std::move(rewards), std::move(calls));
+}
+
+Layout smplx_layout(const std::vector<LayoutBlock>& task, std::vector<RewardTerm> rewards,
+                    std::vector<RefereeCall> calls) {
+  return humanoid_layout(
+      {"self", kSmplxSelfObservation, "m, m/s, rad/s",
+       "root height; 51 body positions rel. root; 52 tan-norm rotations; 52 linear and 52 "
+       "angular velocities; heading frame, clamped to +-5 (HUMANOID-SMPLX.md body order)"},
+      {"joint_targets", 153,
+       "a (target = s*a rad, s = min(1.2 * the hinge's largest limit, pi); knee flexion 5*a)",
+       "51 joints x (x, y, z) hinges in body order, L_Hip first, each hand's fingers after its "
+       "wrist"},
+      task, std::move(rewards), std::move(calls));
 }
 
 int Layout::observation_size() const {

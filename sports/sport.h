@@ -96,6 +96,7 @@ struct RefereeCall {
 
 // How every SMPL sport's observation starts (the self observation) and what its action is.
 inline constexpr int kSmplSelfObservation = 358;
+inline constexpr int kSmplxSelfObservation = 778;
 LayoutBlock smpl_self_observation_block();
 LayoutBlock smpl_action_block();
 
@@ -114,6 +115,9 @@ struct Layout {
 // targets, its reward terms and its referee's calls.
 Layout smpl_layout(const std::vector<LayoutBlock>& task, std::vector<RewardTerm> rewards,
                    std::vector<RefereeCall> calls);
+// The same for the SMPL-X humanoid with fingers: 778 self floats (52 bodies), 153 targets.
+Layout smplx_layout(const std::vector<LayoutBlock>& task, std::vector<RewardTerm> rewards,
+                    std::vector<RefereeCall> calls);
 
 // A sport's settings: each key with its default, what it means, and what values it takes, for
 // `describe` and for refusing what would break a match.

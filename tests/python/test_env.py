@@ -151,7 +151,8 @@ class EnvAgainstRealServer(unittest.TestCase):
     def test_errors_reach_python(self):
         with self.assertRaises(ValueError) as caught:  # the catalog knows before any server
             OlympicsParallelEnv(sport="curling", lcm_url=self.url)
-        self.assertIn("known sports: boxing", str(caught.exception))
+        self.assertIn("known sports: ", str(caught.exception))
+        self.assertIn("boxing", str(caught.exception))
         with self.assertRaises(ValueError) as caught:
             OlympicsParallelEnv(sport="tennis", mode="3v3", lcm_url=self.url)
         self.assertIn("its modes: ball_return, 1v1, 2v2", str(caught.exception))

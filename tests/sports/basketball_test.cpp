@@ -1,0 +1,248 @@
+// Basketball: the basket rule (down through the rim; not up through it, not round it), the rim as
+// real geometry, eq. 12's desired velocity against the ballistic path it promises, the free
+// throw's end by basket or miss, and the SMPL-X hands holding the ball by friction alone.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "basketball/basketball_match.h"
+#include "core/humanoid_assets.h"
+#include "core/humanoid_scene.h"
+#include "registry.h"
+
+namespace olympics::sports::basketball {
+namespace {
+
+using Eigen::Vector3d;
+
+// A ball in a world with the court, stepped at the physics rate; whether it made a basket.
+struct Drop {
+  Court court;
+  core::HumanoidScene scene;
+  equipment::Ball ball;
+  Drop(const Vector3d& at, const Vector3d& velocity)
+      : ball(scene.world(), equipment::basketball(), at, velocity) {
+    court.build(scene.world());
+  }
+  // Steps `seconds`; the first step at which the ball went down through the rim, or -1.
+  int run(double seconds, double* max_x_speed = nullptr) {
+    const int steps = static_cast<int>(seconds / scene.settings().physics_dt());
+    int basket = -1;
+    for (int i = 0; i < steps; ++i) {
+      const Vector3d before = ball.position();
+      ball.prepare_step(scene.settings().physics_dt());
+      scene.physics_step();
+      if (basket < 0 && court.basket(before, ball.position())) basket = i;
+      if (max_x_speed) *max_x_speed = std::max(*max_x_speed, std::abs(ball.velocity().x()));
+    }
+    return basket;
+  }
+};
+
+TEST(BasketballCourt, ABallDroppedThroughTheRimIsABasket) {
+  Drop d({0, 0, 3.8}, Vector3d::Zero());
+  EXPECT_GE(d.run(1.0), 0);
+  EXPECT_LT(d.ball.position().z(), 2.0) << "it fell through the ring";
+}
+
+TEST(BasketballCourt, ABallThroughTheRimFromBelowIsNoBasketOnTheWayUp) {
+  // Thrown straight up through the ring: rises 1.3 m above it, so nothing counts for 0.5 s.
+  Drop d({0, 0, 2.6}, {0, 0, 7.0});
+  const int basket = d.run(0.6);
+  EXPECT_EQ(basket, -1);
+  EXPECT_FALSE(d.court.basket({0, 0, 3.0}, {0, 0, 3.1}));
+  EXPECT_TRUE(d.court.basket({0, 0, 3.1}, {0, 0, 3.0}));
+}
+
+TEST(BasketballCourt, ABallOnTheFrontOfTheRimBouncesOffItAndIsNoBasket) {
+  // Dropped on the front rod: the ring is real geometry, so the ball is knocked away from it.
+  const double ring = Court{}.rim_radius + Court::kRimRod;
+  Drop d({-ring - 0.03, 0, 3.6}, Vector3d::Zero());
+  double max_x_speed = 0;
+  EXPECT_EQ(d.run(1.2, &max_x_speed), -1);
+  EXPECT_GT(max_x_speed, 0.5) << "the rim deflected it";
+  EXPECT_LT(d.ball.position().x(), -ring) << "it went off the front, not in";
+}
+
+TEST(BasketballCourt, BehindTheArcAndOnTheCourt) {
+  const Court c;
+  EXPECT_FALSE(c.behind_arc({-4.6, 0}));  // the free-throw line
+  EXPECT_TRUE(c.behind_arc({-6.9, 0}));
+  EXPECT_TRUE(c.behind_arc({0.5, 6.7}));  // a corner
+  EXPECT_FALSE(c.behind_arc({0.5, 6.5}));
+  EXPECT_TRUE(c.inside({-9.0, 7.0}));
+  EXPECT_FALSE(c.inside({-9.5, 0}));
+  EXPECT_FALSE(c.inside({1.6, 0}));
+  EXPECT_NEAR(c.free_throw_line_x(), 0.375 - 4.6, 1e-12);
+}
+
+TEST(BasketballRewards, TheDesiredVelocityReachesTheTargetAtTheTopOfItsFlight) {
+  const Vector3d ball(-4.3, 0.4, 1.9), target(0, 0, 3.35);
+  const Vector3d v = desired_launch_velocity(ball, target);
+  // By hand: dz = 1.45, t = sqrt(2 * 1.45 / 9.81), vz = sqrt(2 g dz), horizontal = distance / t.
+  const double t = std::sqrt(2 * 1.45 / 9.81);
+  EXPECT_NEAR(v.z(), std::sqrt(2 * 9.81 * 1.45), 1e-9);
+  EXPECT_NEAR(v.x(), 4.3 / t, 1e-9);
+  EXPECT_NEAR(v.y(), -0.4 / t, 1e-9);
+  // The ballistic path from there: at t it is at the target with no vertical speed.
+  const Vector3d at = ball + v * t + 0.5 * Vector3d(0, 0, -9.81) * t * t;
+  EXPECT_NEAR((at - target).norm(), 0, 1e-9);
+  EXPECT_NEAR(v.z() - 9.81 * t, 0, 1e-9);
+
+  const auto on = free_throw_terms(ball, v, target, false);
+  EXPECT_FLOAT_EQ(on[0], 1.0f);
+  EXPECT_NEAR(on[1], v.dot((target - ball).normalized()), 1e-5);
+  EXPECT_EQ(on[2], 0.0f);
+  const auto off = free_throw_terms(ball, v + Vector3d(0, 0, 2), target, true);
+  EXPECT_NEAR(off[0], std::exp(-0.1 * 4), 1e-6);
+  EXPECT_EQ(off[2], 1.0f);
+}
+
+std::unique_ptr<SportMatch> free_throw(std::uint64_t seed, const nlohmann::json& options = {}) {
+  return sport_or_throw("basketball").create({"free_throw", seed, 0.0, options});
+}
+
+// Zero-action ticks until the match ends (at most `ticks`); every tick's events, in order.
+nlohmann::json play_zero(SportMatch& m, int ticks) {
+  std::vector<float> zero(m.action_size(), 0.0f);
+  std::vector<std::span<const float>> actions(m.slot_count(), zero);
+  nlohmann::json events = nlohmann::json::array();
+  for (int t = 0; t < ticks && !m.outcome().match_over; ++t) {
+    m.step(actions);
+    for (const auto& e : m.outcome().info["events"]) events.push_back(e);
+  }
+  return events;
+}
+
+// Where a ball launched at `v` from `from` is after `seconds`, with gravity and the ball's
+// quadratic drag (Euler at 1 ms: close enough to aim).
+Vector3d fly(const equipment::BallSpec& spec, Vector3d p, Vector3d v, double seconds) {
+  const double k = 0.5 * equipment::Ball::kAirDensity * spec.drag_coefficient * M_PI * spec.radius *
+                   spec.radius / spec.mass;
+  for (double t = 0; t < seconds; t += 1e-3) {
+    v += (Vector3d(0, 0, -9.81) - k * v.norm() * v) * 1e-3;
+    p += v * 1e-3;
+  }
+  return p;
+}
+
+// Launches the ball from where it is so that it passes `short_by` m in front of the rim's centre
+// after `flight_s`, going down: aimed without drag, then corrected for it.
+void shoot(BasketballMatch& b, double flight_s, double short_by = 0) {
+  const Vector3d from = b.ball().position();
+  const Vector3d goal = b.court().rim_centre() - Vector3d(short_by, 0, 0);
+  Vector3d aim = goal;
+  Vector3d v;
+  for (int i = 0; i < 20; ++i) {
+    const Vector3d d = aim - from;
+    v = {d.x() / flight_s, d.y() / flight_s, (d.z() + 0.5 * 9.81 * flight_s * flight_s) / flight_s};
+    aim += goal - fly(b.ball().spec(), from, v, flight_s);
+  }
+  b.ball().set_state(from, v);
+}
+
+TEST(BasketballFreeThrow, AShotThroughTheRimEndsTheThrowWithABasket) {
+  auto m = free_throw(3, {{"present_s", 0}});
+  auto& b = dynamic_cast<BasketballMatch&>(*m);
+  EXPECT_EQ(m->obs_size(), 795);
+  EXPECT_EQ(m->action_size(), 153);
+  shoot(b, 1.1);
+  const nlohmann::json events = play_zero(*m, 60);
+  ASSERT_TRUE(m->outcome().match_over);
+  EXPECT_EQ(m->outcome().reason, "basket");
+  EXPECT_EQ(m->outcome().scores[0], 1.0f);
+  EXPECT_EQ(m->outcome().terms[0][2], 1.0f) << "the basket term on the last tick";
+  bool called = false;
+  for (const auto& e : events) called |= e["call"] == "basket";
+  EXPECT_TRUE(called);
+}
+
+TEST(BasketballFreeThrow, AShortShotIsAMissOnTheFloor) {
+  auto m = free_throw(3, {{"present_s", 0}});
+  auto& b = dynamic_cast<BasketballMatch&>(*m);
+  shoot(b, 1.0, 1.5);
+  play_zero(*m, 90);
+  ASSERT_TRUE(m->outcome().match_over);
+  EXPECT_EQ(m->outcome().reason, "missed");
+  EXPECT_EQ(m->outcome().scores[0], 0.0f);
+}
+
+TEST(BasketballFreeThrow, TheBallIsPresentedStillBetweenTheHandsAtTheStart) {
+  auto m = free_throw(5);
+  auto& b = dynamic_cast<BasketballMatch&>(*m);
+  play_zero(*m, 10);  // 0.33 s: still presented
+  EXPECT_NEAR((b.ball().position() - b.present_spot()).norm(), 0, 1e-9);
+  EXPECT_TRUE(b.presenting());
+  const Vector3d root =
+      static_cast<const BasketballMatch&>(b).scene().humanoid(0).body_state(0).position;
+  EXPECT_NEAR(b.present_spot().x() - root.x(), BasketballMatch::kPresentForward, 0.1);
+}
+
+// The hold: the SMPL-X humanoid's arms forward, palms facing (shoulders turned 100 degrees in,
+// forearms rolled 90), the ball placed between the palms, then the shoulders turned `squeeze`
+// degrees further so that the palms press on it. The pelvis is fixed to the world here so that
+// the grip alone is measured (standing while holding needs a scripted SMPL-X balance, not yet
+// written). Returns the ball's largest distance from the palms' midpoint over `hold_s`, and its
+// distance from it 1 s after the arms open back to the T-pose.
+struct Grip {
+  double max_slip = 0, after_release = 0;
+};
+
+Grip hold(double squeeze_deg, double hold_s) {
+  const core::ModelSpec spec = core::load_humanoid(core::HumanoidKind::SmplX);
+  core::HumanoidScene scene;
+  scene.add_humanoid(spec, {});
+  core::Humanoid& h = scene.humanoid(0);
+  dJointID fix = dJointCreateFixed(scene.world().world(), 0);
+  dJointAttach(fix, h.ode_body(0), 0);
+  dJointSetFixed(fix);
+  constexpr int kLShoulder = 15, kLElbow = 16, kLWrist = 17, kRShoulder = 34, kRElbow = 35,
+                kRWrist = 36;
+  std::vector<double> targets(h.dof_count(), 0.0);
+  const auto joint = [&](int body, int axis) -> double& { return targets[3 * (body - 1) + axis]; };
+  const auto pose = [&](double shoulder_deg) {
+    const double d = M_PI / 180;
+    std::fill(targets.begin(), targets.end(), 0.0);
+    joint(kLShoulder, 2) = -shoulder_deg * d, joint(kRShoulder, 2) = shoulder_deg * d;
+    if (shoulder_deg > 0) joint(kLElbow, 1) = -90 * d, joint(kRElbow, 1) = 90 * d;
+    h.set_joint_targets(targets);
+  };
+  const auto palms = [&] {  // the palm boxes' centres (HUMANOID-SMPLX.md), their midpoint
+    const auto l = h.body_state(kLWrist), r = h.body_state(kRWrist);
+    return Vector3d(0.5 * (l.position + l.orientation * Vector3d(-.0031, .0523, -.0013) +
+                           r.position + r.orientation * Vector3d(-.0029, -.0537, -.0044)));
+  };
+  const double dt = scene.settings().physics_dt();
+  pose(100);
+  for (int i = 0; i < 30; ++i) scene.tick();
+  equipment::Ball ball(scene.world(), equipment::basketball(), palms());
+  const auto step = [&] {
+    ball.prepare_step(dt);
+    scene.physics_step();
+  };
+  Grip g;
+  pose(100 + squeeze_deg);
+  for (int i = 0; i < static_cast<int>(hold_s / dt); ++i) {
+    step();
+    g.max_slip = std::max(g.max_slip, (ball.position() - palms()).norm());
+  }
+  pose(0);
+  for (int i = 0; i < static_cast<int>(1.0 / dt); ++i) step();
+  g.after_release = (ball.position() - palms()).norm();
+  return g;
+}
+
+TEST(BasketballGrip, PressedPalmsHoldTheBallByFrictionForThreeSecondsAndOpenHandsLetGo) {
+  const Grip g = hold(5, 3.0);
+  EXPECT_LT(g.max_slip, 0.05) << "the ball stayed between the palms";
+  EXPECT_GT(g.after_release, 0.3) << "opening the arms let it fall";
+}
+
+TEST(BasketballGrip, WithoutPressingThePalmsTheBallFalls) {
+  // The same pose, palms not turned in onto the ball: nothing but friction held it before.
+  const Grip g = hold(-10, 1.0);
+  EXPECT_GT(g.max_slip, 0.3);
+}
+
+}  // namespace
+}  // namespace olympics::sports::basketball
