@@ -4,6 +4,7 @@
 
 #include "core/humanoid_assets.h"
 #include "core/state_hash.h"
+#include "framework/ball_observation.h"
 #include "framework/jittered_start.h"
 
 namespace olympics::sports::basketball {
@@ -14,14 +15,12 @@ const core::ModelSpec& player_model() {
   return spec;
 }
 
-constexpr double kSpinLimit = 100;    // rad/s, observation clamp
 constexpr double kFloorTouch = 0.01;  // m: the ball's bottom this close to the floor
 
 }  // namespace
 
 std::vector<LayoutBlock> free_throw_layout() {
-  return {{"ball", 9, "m, m/s, rad/s",
-           "the ball's centre relative to the root (3), velocity (3), spin (3), heading frame"},
+  return {ball_observation_block(),
           {"rim", 3, "m", "the rim's centre relative to the root, heading frame"},
           {"target", 3, "m",
            "the target of the desired launch velocity (above the rim) relative to the ball, "
@@ -93,10 +92,7 @@ void BasketballMatch::settle_tick() {
 
 void BasketballMatch::write_task_observation(int, const HeadingFrame& frame,
                                              ObservationWriter& out) const {
-  out.begin("ball")
-      .put(frame.point(ball_->position()))
-      .put(frame.vector(ball_->velocity()))
-      .put_clamped(frame.vector(ball_->angular_velocity()), kSpinLimit);
+  write_ball_observation(*ball_, frame, out);
   out.begin("rim").put(frame.point(config_.court.rim_centre()));
   out.begin("target").put(frame.vector(target() - ball_->position()));
   out.begin("throw")

@@ -6,6 +6,7 @@
 
 #include "core/humanoid_assets.h"
 #include "core/state_hash.h"
+#include "framework/ball_observation.h"
 #include "framework/jittered_start.h"
 
 namespace olympics::sports::soccer {
@@ -17,7 +18,6 @@ const core::ModelSpec& player_model() {
 }
 
 constexpr double kKickerBehind_m = 2.0;  // the penalty kicker starts this far behind the ball
-constexpr double kSpinLimit = 100;       // rad/s, observation clamp
 
 }  // namespace
 
@@ -29,8 +29,7 @@ SoccerMode soccer_mode(const std::string& mode) {
 
 std::vector<LayoutBlock> soccer_task_layout(const ModeSpec& mode) {
   std::vector<LayoutBlock> blocks = {
-      {"ball", 9, "m, m/s, rad/s",
-       "the ball's centre relative to the root (3), velocity (3), spin (3), heading frame"},
+      ball_observation_block(),
       {"goals", 6, "m",
        "the centre of the goal I attack (3) and of the goal I defend (3), at half the goal's "
        "height, relative to the root, heading frame"},
@@ -317,10 +316,7 @@ void SoccerMatch::on_time_limit() {
 void SoccerMatch::write_task_observation(int slot, const HeadingFrame& frame,
                                          ObservationWriter& out) const {
   const int d = attack(slot);
-  out.begin("ball")
-      .put(frame.point(ball_->position()))
-      .put(frame.vector(ball_->velocity()))
-      .put_clamped(frame.vector(ball_->angular_velocity()), kSpinLimit);
+  write_ball_observation(*ball_, frame, out);
   out.begin("goals")
       .put(frame.point(config_.field.goal_centre(d)))
       .put(frame.point(config_.field.goal_centre(-d)));

@@ -1,0 +1,27 @@
+// The "ball" observation block of a sport played with an ODE ball (soccer, basketball): its
+// layout entry and its writer in one place, so that what describe says and what is written agree.
+#pragma once
+
+#include "equipment/ball.h"
+#include "framework/heading_frame.h"
+#include "framework/observation_writer.h"
+#include "sport.h"
+
+namespace olympics::sports {
+
+inline constexpr double kBallSpinLimit = 100;  // rad/s, observation clamp
+
+inline LayoutBlock ball_observation_block() {
+  return {"ball", 9, "m, m/s, rad/s",
+          "the ball's centre relative to the root (3), velocity (3), spin (3), heading frame"};
+}
+
+inline void write_ball_observation(const equipment::Ball& ball, const HeadingFrame& frame,
+                                   ObservationWriter& out) {
+  out.begin("ball")
+      .put(frame.point(ball.position()))
+      .put(frame.vector(ball.velocity()))
+      .put_clamped(frame.vector(ball.angular_velocity()), kBallSpinLimit);
+}
+
+}  // namespace olympics::sports
