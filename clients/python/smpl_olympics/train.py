@@ -315,7 +315,6 @@ class Trainer:
                 self.restart_helpers(e)
                 if ids is not None:
                     ended[ids[e]] = (t, e)
-            self.results.extend(env.results())
             ep.add(rewards[:, self.learning], infos["reward_terms"][:, self.learning],
                    infos["episode_over"])
             buf["obs"].append(obs)
@@ -330,6 +329,7 @@ class Trainer:
             last = self.model.value(torch.as_tensor(self.norm.normalise(raw[:, self.learning])))
         last = last.numpy()
         arr = {k: np.asarray(v, np.float32) for k, v in buf.items()}
+        self.results.extend(env.results())  # the client keeps them until asked
         if ended:
             self.credit_outcomes(env, ended, arr["rewards"])
         adv, ret = gae(arr["rewards"], arr["values"], arr["dones"], last, a.gamma, a.lam)
@@ -343,19 +343,21 @@ class Trainer:
         ended in this iteration. A result comes a round trip after the match's last tick; one
         that has not come within 0.5 s gets nothing (counted in `outcomes_missed`)."""
         give_up = time.monotonic() + 0.5
+        heard = self.results
         while True:
-            for r in self.results:
-                if r["match_id"] in ended and r["winner_team"] >= 0:
-                    t, e = ended[r["match_id"]]
-                    for i, s in enumerate(self.learning):
-                        won = r["slot_team"][s] == r["winner_team"]
-                        rewards[t, e, i] += self.args.win_reward if won else -self.args.win_reward
-            for r in self.results:
-                ended.pop(r["match_id"], None)
+            for r in heard:
+                where = ended.pop(r["match_id"], None)
+                if where is None or r["winner_team"] < 0:
+                    continue
+                t, e = where
+                for i, s in enumerate(self.learning):
+                    won = r["slot_team"][s] == r["winner_team"]
+                    rewards[t, e, i] += self.args.win_reward if won else -self.args.win_reward
             if not ended or time.monotonic() > give_up:
                 break
             time.sleep(0.002)
-            self.results.extend(env.results())
+            heard = env.results()
+            self.results.extend(heard)
         self.outcomes_missed += len(ended)
 
     def scores(self):
