@@ -115,6 +115,32 @@ class TrainTest(unittest.TestCase):
         self.assertEqual(trainer.outcomes_missed, 1)
         self.assertEqual(float(np.abs(rewards).sum()), 10.0)
 
+    def test_action_mask_learns_only_the_named_entries_and_critic_warmup_holds_the_policy(self):
+        args = run_args(os.path.join(self.dir, "mask"), "--samples", "8192", "--num-envs", "16",
+                        "--horizon", "32", "--hidden", "32", "--lr", "1e-3",
+                        "--action-mask", "1:3", "--critic-warmup", "8")
+        trainer = train.Trainer(args, spec=TOY_SPEC)
+        start = [p.detach().clone() for p in trainer.model.actor.parameters()]
+        args.samples = 8 * 16 * 32  # exactly the warm-up's iterations
+        trainer.train(make_env=lambda: ToyVectorEnv(args.num_envs))
+        for before, after in zip(start, trainer.model.actor.parameters()):
+            self.assertTrue(torch.equal(before, after), "the actor moved during the warm-up")
+        critic_rows = [r for r in read_metrics(args.run) if r.get("value_loss")]
+        self.assertGreater(float(critic_rows[0]["value_loss"]), float(critic_rows[-1]["value_loss"]))
+        args.samples = 16384
+        trainer.train(make_env=lambda: ToyVectorEnv(args.num_envs))
+        last = trainer.model.actor[-1]
+        self.assertTrue(torch.equal(last.weight[[0, 3]], torch.zeros(2, 32)))
+        self.assertTrue(torch.equal(last.bias[[0, 3]], torch.zeros(2)))
+        self.assertGreater(float(last.weight[1:3].abs().sum()), 0.0)
+        obs = torch.randn(64, ToyVectorEnv.OBS)
+        a, _, _ = trainer.model.act(obs)  # no exploration outside the mask either
+        self.assertTrue(torch.equal(a[:, [0, 3]], torch.zeros(64, 2)))
+        self.assertGreater(float(a[:, 1:3].std()), 0.0)
+        with self.assertRaises(SystemExit) as bad:
+            train.action_mask("3:9", 4)
+        self.assertIn("outside the action's 0:4", str(bad.exception))
+
     def test_term_weights_override_the_sports_by_name(self):
         terms = [{"name": "facing", "weight": 0.1}, {"name": "strike", "weight": 0.6},
                  {"name": "point", "weight": 1.0}]

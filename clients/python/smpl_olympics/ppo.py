@@ -51,7 +51,8 @@ class RunningNorm:
 
 
 class ActorCritic(nn.Module):
-    def __init__(self, obs_size, action_size, hidden, log_std=-1.6, learn_std=False):
+    def __init__(self, obs_size, action_size, hidden, log_std=-1.6, learn_std=False,
+                 action_mask=None):
         super().__init__()
         self.actor = mlp([obs_size, *hidden, action_size])
         self.critic = mlp([obs_size, *hidden, 1])
@@ -62,6 +63,19 @@ class ActorCritic(nn.Module):
             self.actor[-1].bias.zero_()
         self.log_std = nn.Parameter(torch.full((action_size,), float(log_std)),
                                     requires_grad=learn_std)
+        # The entries the network may act on (all by default). Masked entries are exactly zero:
+        # their rows of the last layer start at zero and get no gradient, so the exported
+        # snapshot holds the mask itself, and they are neither explored nor in the likelihood.
+        mask = torch.ones(action_size) if action_mask is None else \
+            torch.as_tensor(action_mask, dtype=torch.float32)
+        self.register_buffer("mask", mask)
+        if action_mask is not None:
+            last = self.actor[-1]
+            with torch.no_grad():
+                last.weight.mul_(mask[:, None])
+                last.bias.mul_(mask)
+            last.weight.register_hook(lambda g: g * self.mask[:, None])
+            last.bias.register_hook(lambda g: g * self.mask)
 
     def distribution(self, obs):
         mean = self.actor(obs)
@@ -70,12 +84,15 @@ class ActorCritic(nn.Module):
     def value(self, obs):
         return self.critic(obs).squeeze(-1)
 
+    def log_prob(self, d, actions):
+        return (d.log_prob(actions) * self.mask).sum(-1)
+
     @torch.no_grad()
     def act(self, obs):
         """Sampled actions, their log-probabilities and the values, for a batch of observations."""
         d = self.distribution(obs)
-        a = d.sample()
-        return a, d.log_prob(a).sum(-1), self.value(obs)
+        a = d.mean + (d.sample() - d.mean) * self.mask
+        return a, self.log_prob(d, a), self.value(obs)
 
     @torch.no_grad()
     def mean_action(self, obs):
@@ -108,12 +125,14 @@ class PpoSettings:
     target_kl: float = 0.02  # stop an update's epochs once the policy moved this far (0: never)
 
 
-def ppo_update(model, optimizer, batch, s: PpoSettings, generator):
+def ppo_update(model, optimizer, batch, s: PpoSettings, generator, train_policy=True):
     """One PPO update over a flat batch (obs, actions, log_probs, advantages, returns);
     returns mean losses, the approximate KL and the minibatch steps taken. The epochs stop early
     once the KL from the collecting policy passes 1.5 x target_kl: with a small fixed sigma a
     small move of the mean is a large KL, and unchecked updates wrecked the scripted baseline a
-    residual policy starts from (measured: median KL 0.3 per update in fencing)."""
+    residual policy starts from (measured: median KL 0.3 per update in fencing).
+    train_policy=False fits the value function only (a critic warm-up: the policy stays put
+    until the advantages it would follow mean something)."""
     obs, actions, old_logp, adv, ret = (torch.as_tensor(batch[k]) for k in
                                         ("obs", "actions", "log_probs", "advantages", "returns"))
     adv = (adv - adv.mean()) / (adv.std() + 1e-8)
@@ -127,12 +146,14 @@ def ppo_update(model, optimizer, batch, s: PpoSettings, generator):
         for start in range(0, n, s.minibatch):
             idx = order[start:start + s.minibatch]
             d = model.distribution(obs[idx])
-            logp = d.log_prob(actions[idx]).sum(-1)
+            logp = model.log_prob(d, actions[idx])
             ratio = (logp - old_logp[idx]).exp()
             policy_loss = -torch.min(ratio * adv[idx],
                                      ratio.clamp(1 - s.clip, 1 + s.clip) * adv[idx]).mean()
             value_loss = (model.value(obs[idx]) - ret[idx]).pow(2).mean()
-            loss = policy_loss + s.value_coef * value_loss - s.entropy_coef * d.entropy().sum(-1).mean()
+            loss = s.value_coef * value_loss
+            if train_policy:
+                loss = loss + policy_loss - s.entropy_coef * (d.entropy() * model.mask).sum(-1).mean()
             optimizer.zero_grad()
             loss.backward()
             nn.utils.clip_grad_norm_(model.parameters(), s.max_grad_norm)

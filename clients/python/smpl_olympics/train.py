@@ -76,6 +76,12 @@ def parse_args(argv=None):
     p.add_argument("--term-weights", default="",
                    help="NAME=W,...: train on the reward terms with these weights instead of the "
                         "sport's (terms not named keep theirs); e.g. facing=0,velocity=0")
+    p.add_argument("--action-mask", default="",
+                   help="START:END,...: the action entries the network learns (the rest stay "
+                        "zero, or the base policy's with --residual); e.g. 39:69, the SMPL arms "
+                        "(bodies 14-23), keeps the scripted legs; empty: all")
+    p.add_argument("--critic-warmup", type=int, default=0,
+                   help="iterations that fit only the value function before the policy moves")
     p.add_argument("--swap-every", type=int, default=10, help="--opponent frozen: refresh period")
     p.add_argument("--init", help="warm start from a run folder (blocks matched by name)")
     p.add_argument("--seed", type=int, default=0)
@@ -92,6 +98,22 @@ def parse_args(argv=None):
         if getattr(args, key) is None:
             setattr(args, key, value)
     return args
+
+
+def action_mask(spec, size):
+    """--action-mask "START:END,..." as a 0/1 vector of the action's size, or None."""
+    if not spec:
+        return None
+    mask = np.zeros(size, np.float32)
+    for part in spec.split(","):
+        try:
+            start, end = (int(x) for x in part.split(":"))
+        except ValueError:
+            raise SystemExit(f"--action-mask: {part!r} is not START:END (e.g. 39:69)")
+        if not 0 <= start < end <= size:
+            raise SystemExit(f"--action-mask: {part!r} is outside the action's 0:{size}")
+        mask[start:end] = 1
+    return mask
 
 
 def term_weights(rewards, spec):
@@ -158,7 +180,7 @@ class Trainer:
         self.generator = torch.Generator().manual_seed(args.seed)
         self.rng = np.random.default_rng(args.seed)
         self.model = ActorCritic(self.obs_size, self.action_size, args.hidden, args.log_std,
-                                 args.learn_std)
+                                 args.learn_std, action_mask(args.action_mask, self.action_size))
         self.optimizer = torch.optim.Adam([p for p in self.model.parameters() if p.requires_grad],
                                           lr=args.lr)
         self.norm = RunningNorm(self.obs_size)
@@ -245,7 +267,8 @@ class Trainer:
             while self.samples < a.samples:
                 started = time.monotonic()
                 batch, raw = self.collect(env, raw, ep)
-                stats = ppo_update(self.model, self.optimizer, batch, self.ppo, self.generator)
+                stats = ppo_update(self.model, self.optimizer, batch, self.ppo, self.generator,
+                                   train_policy=self.iteration >= a.critic_warmup)
                 self.iteration += 1
                 self.samples += len(batch["obs"])
                 self.wall += time.monotonic() - started
