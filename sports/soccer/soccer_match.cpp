@@ -8,6 +8,7 @@
 #include "core/state_hash.h"
 #include "framework/ball_observation.h"
 #include "framework/jittered_start.h"
+#include "framework/team_observation.h"
 
 namespace olympics::sports::soccer {
 namespace {
@@ -36,17 +37,7 @@ std::vector<LayoutBlock> soccer_task_layout(const ModeSpec& mode) {
       {"field", 4, "m, cos, sin",
        "my root from the centre spot along my attack direction and across it (left positive); "
        "my heading relative to the attack direction (cos, sin)"}};
-  const int teammates =
-      static_cast<int>(std::count(mode.slot_teams.begin(), mode.slot_teams.end(), 0)) - 1;
-  const int opponents = mode.slot_count() - teammates - 1;
-  if (teammates > 0)
-    blocks.push_back({"teammates", 6 * teammates, "m, m/s",
-                      "each teammate's root position (3) and velocity (3), heading frame, in slot "
-                      "order"});
-  if (opponents > 0)
-    blocks.push_back({"opponents", 6 * opponents, "m, m/s",
-                      "each opponent's root position (3) and velocity (3), heading frame, in slot "
-                      "order"});
+  append_team_blocks(mode, blocks);
   blocks.push_back({"match", 5, "goals, fraction, flag, half",
                     "my side's goals, the other side's goals, share of the match time left, the "
                     "restart being waited for (+1 mine to take, -1 theirs, 0 ball in play), the "
@@ -327,20 +318,7 @@ void SoccerMatch::write_task_observation(int slot, const HeadingFrame& frame,
       .put(d * root.y())
       .put(std::cos(relative))
       .put(std::sin(relative));
-  const auto others = [&](bool same_team) {
-    for (int s = 0; s < slot_count(); ++s) {
-      if (s == slot || (team_of(s) == team_of(slot)) != same_team) continue;
-      const core::BodyState st = player(s).body_state(0);
-      out.put(frame.point(st.position)).put(frame.vector(st.linear_velocity));
-    }
-  };
-  const auto& blocks = layout().observation;
-  const auto has = [&](const char* name) {
-    return std::any_of(blocks.begin(), blocks.end(),
-                       [&](const LayoutBlock& b) { return b.name == name; });
-  };
-  if (has("teammates")) others((out.begin("teammates"), true));
-  if (has("opponents")) others((out.begin("opponents"), false));
+  write_team_blocks(*this, slot, frame, out);
   const int mine = team_of(slot);
   const double theirs_score = team_count() > 1 ? outcome_.scores[1 - mine] : 0.0;
   double restart = 0;

@@ -2,12 +2,10 @@
 
 #include <cmath>
 
+#include "framework/ball_progress.h"
+
 namespace olympics::sports::soccer {
 namespace {
-
-double flat_distance(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  return (a - b).head<2>().norm();
-}
 
 constexpr double kGravity = 9.81;
 
@@ -33,17 +31,13 @@ std::vector<RewardTerm> team_play_rewards() {
 }
 
 double player_to_ball(const RewardState& s) {
-  return flat_distance(s.root_before, s.ball) - flat_distance(s.root, s.ball);
+  return approach_to_ball(s.root_before, s.root, s.ball);
 }
 
-double ball_to_goal(const RewardState& s) {
-  return (s.target - s.ball_before).norm() - (s.target - s.ball).norm();
-}
+double ball_to_goal(const RewardState& s) { return ball_progress(s.target, s.ball_before, s.ball); }
 
 double ball_velocity_to_goal(const RewardState& s) {
-  const Eigen::Vector3d to_goal = s.target - s.ball;
-  const double d = to_goal.norm();
-  return d > 1e-9 ? s.ball_velocity.dot(to_goal / d) : 0.0;
+  return ball_speed_towards(s.target, s.ball, s.ball_velocity);
 }
 
 bool entry_point(const RewardState& s, Eigen::Vector3d& entry) {

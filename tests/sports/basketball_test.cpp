@@ -9,6 +9,7 @@
 #include "core/humanoid_assets.h"
 #include "core/humanoid_scene.h"
 #include "registry.h"
+#include "zero_play.h"
 
 namespace olympics::sports::basketball {
 namespace {
@@ -100,18 +101,6 @@ TEST(BasketballRewards, TheDesiredVelocityReachesTheTargetAtTheTopOfItsFlight) {
 
 std::unique_ptr<SportMatch> free_throw(std::uint64_t seed, const nlohmann::json& options = {}) {
   return sport_or_throw("basketball").create({"free_throw", seed, 0.0, options});
-}
-
-// Zero-action ticks until the match ends (at most `ticks`); every tick's events, in order.
-nlohmann::json play_zero(SportMatch& m, int ticks) {
-  std::vector<float> zero(m.action_size(), 0.0f);
-  std::vector<std::span<const float>> actions(m.slot_count(), zero);
-  nlohmann::json events = nlohmann::json::array();
-  for (int t = 0; t < ticks && !m.outcome().match_over; ++t) {
-    m.step(actions);
-    for (const auto& e : m.outcome().info["events"]) events.push_back(e);
-  }
-  return events;
 }
 
 // Where a ball launched at `v` from `from` is after `seconds`, with gravity and the ball's

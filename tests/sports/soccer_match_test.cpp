@@ -8,6 +8,7 @@
 #include "core/control_rate.h"
 #include "policies.h"
 #include "registry.h"
+#include "zero_play.h"
 
 namespace olympics::sports::soccer {
 namespace {
@@ -18,20 +19,6 @@ std::unique_ptr<SportMatch> make(const std::string& mode, std::uint64_t seed,
 }
 
 SoccerMatch& soccer(std::unique_ptr<SportMatch>& m) { return dynamic_cast<SoccerMatch&>(*m); }
-
-// One tick with zero actions; the tick's events.
-nlohmann::json step_zero(SportMatch& m) {
-  std::vector<float> zero(m.action_size(), 0.0f);
-  std::vector<std::span<const float>> actions(m.slot_count(), zero);
-  m.step(actions);
-  return m.outcome().info["events"];
-}
-
-const nlohmann::json* find_call(const nlohmann::json& events, const std::string& call) {
-  for (const auto& e : events)
-    if (e["call"] == call) return &e;
-  return nullptr;
-}
 
 Eigen::Vector3d root(SportMatch& m, int slot) {
   const SoccerMatch& s = dynamic_cast<SoccerMatch&>(m);

@@ -1,0 +1,35 @@
+// Playing a match in process with zero actions, and reading its events (the sports' match tests).
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "sport.h"
+
+namespace olympics::sports {
+
+// One tick with zero actions; the tick's events.
+inline nlohmann::json step_zero(SportMatch& m) {
+  std::vector<float> zero(m.action_size(), 0.0f);
+  std::vector<std::span<const float>> actions(m.slot_count(), zero);
+  m.step(actions);
+  return m.outcome().info["events"];
+}
+
+// Zero-action ticks until the match ends (at most `ticks`); every tick's events, in order.
+inline nlohmann::json play_zero(SportMatch& m, int ticks) {
+  nlohmann::json events = nlohmann::json::array();
+  for (int t = 0; t < ticks && !m.outcome().match_over; ++t)
+    for (const auto& e : step_zero(m)) events.push_back(e);
+  return events;
+}
+
+// The first event of `call` among `events`, or nullptr.
+inline const nlohmann::json* find_call(const nlohmann::json& events, const std::string& call) {
+  for (const auto& e : events)
+    if (e["call"] == call) return &e;
+  return nullptr;
+}
+
+}  // namespace olympics::sports
