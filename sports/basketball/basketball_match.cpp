@@ -6,6 +6,7 @@
 #include "core/state_hash.h"
 #include "framework/ball_observation.h"
 #include "framework/jittered_start.h"
+#include "framework/team_observation.h"
 
 namespace olympics::sports::basketball {
 namespace {
@@ -15,43 +16,127 @@ const core::ModelSpec& player_model() {
   return spec;
 }
 
-constexpr double kFloorTouch = 0.01;  // m: the ball's bottom this close to the floor
+constexpr double kFloorTouch = 0.01;     // m: the ball's bottom this close to the floor
+constexpr double kTeammateAside = 3.0;   // m: the taker's teammate beside it at a restart
+constexpr double kDefendersApart = 1.2;  // m between two defenders at a restart
 
 }  // namespace
 
-std::vector<LayoutBlock> free_throw_layout() {
-  return {ball_observation_block(),
-          {"rim", 3, "m", "the rim's centre relative to the root, heading frame"},
-          {"target", 3, "m",
-           "the target of the desired launch velocity (above the rim) relative to the ball, "
-           "heading frame"},
-          {"throw", 2, "fraction, flag",
-           "share of the time left; 1 while the ball is still being presented, else 0"}};
+bool is_team_play(const std::string& mode) { return mode != "free_throw"; }
+
+std::vector<LayoutBlock> basketball_task_layout(const ModeSpec& mode) {
+  if (!is_team_play(mode.name))
+    return {ball_observation_block(),
+            {"rim", 3, "m", "the rim's centre relative to the root, heading frame"},
+            {"target", 3, "m",
+             "the target of the desired launch velocity (above the rim) relative to the ball, "
+             "heading frame"},
+            {"throw", 2, "fraction, flag",
+             "share of the time left; 1 while the ball is still being presented, else 0"}};
+  std::vector<LayoutBlock> blocks = {
+      ball_observation_block(),
+      {"rim", 3, "m", "the rim's centre relative to the root, heading frame"},
+      {"arc", 2, "m",
+       "how far my root and the ball are beyond the 2-point arc (negative: inside it)"}};
+  append_team_blocks(mode, blocks);
+  blocks.push_back({"game", 7, "points, fraction, s, flag",
+                    "my side's points, the other side's, share of the game time left, shot clock "
+                    "left (s), possession (+1 my side, -1 the other, 0 nobody yet), the side "
+                    "with the ball has cleared it (1, else 0), the ball is being presented to me "
+                    "at a restart (1, else 0)"});
+  return blocks;
 }
 
 std::vector<RefereeCall> basketball_calls() {
-  return {{"basket", "the ball went down through the rim (slot: the shooter, points)"},
-          {"miss", "the ball came down on the floor or left the court without a basket"},
-          {"fall", "a player fell (body)"}};
+  return {
+      {"basket",
+       "the ball went down through the rim (slot: the shooter; points, team, counted, x and y "
+       "of the release)"},
+      {"not_cleared",
+       "a basket by a side that had not cleared the ball behind the arc: no points "
+       "(slot: the shooter)"},
+      {"out", "the ball touched the floor outside the lines (last_touch_slot)"},
+      {"shot_clock", "the side with the ball did not get a shot to the basket in time (team)"},
+      {"restart", "play restarts (kind: check_ball or after_basket; team, x, y)"},
+      {"miss", "free throw: the ball came down on the floor or left the court without a basket"},
+      {"fall", "a player fell (body)"}};
 }
 
 BasketballMatch::BasketballMatch(const BasketballConfig& config, const ModeSpec& mode,
                                  Layout layout, const MatchSettings& settings)
-    : SmplMatch(mode, std::move(layout), settings), config_(config), rng_(settings.seed) {
+    : SmplMatch(mode, std::move(layout), settings),
+      config_(config),
+      team_play_(is_team_play(mode.name)),
+      rng_(settings.seed),
+      referee_(config.court, config.rules, mode.slot_teams) {
   config_.court.build(scene().world());
-  add_player(player_model(), {});
-  const Eigen::Vector2d spot(config_.court.free_throw_line_x() - kBehindLine, 0);
-  const core::RootPlacement start = jittered_start(spot, 0.0, rng_);
-  reset_player(0, start);
-  const Eigen::Vector2d forward(std::cos(start.yaw), std::sin(start.yaw));
-  const Eigen::Vector2d at = start.position.head<2>() + kPresentForward * forward;
-  present_ = {at.x(), at.y(), kPresentHeight};
-  ball_ = std::make_unique<equipment::Ball>(scene().world(), equipment::basketball(), present_);
-  ball_before_step_ = present_;
+  for (int s = 0; s < slot_count(); ++s) add_player(player_model(), {});
+  ball_ = std::make_unique<equipment::Ball>(scene().world(), equipment::basketball(),
+                                            Eigen::Vector3d(0, 0, 1));
+  root_before_.resize(slot_count());
+  if (team_play_) {
+    ball_->sense_contacts();
+    const int first = std::uniform_int_distribution<int>(0, 1)(rng_);
+    const Restart r = referee_.start(first, 0.0);
+    log_stoppage({"start", std::nullopt, -1, r});
+    carry_out(r);
+  } else {
+    const Eigen::Vector2d spot(config_.court.free_throw_line_x() - kBehindLine, 0);
+    const core::RootPlacement start = jittered_start(spot, 0.0, rng_);
+    reset_player(0, start);
+    present_to(0, start);
+  }
+  ball_before_step_ = ball_before_tick_ = ball_->position();
+  for (int s = 0; s < slot_count(); ++s) root_before_[s] = player(s).body_state(0).position;
 }
 
 Eigen::Vector3d BasketballMatch::target() const {
   return config_.court.rim_centre() + Eigen::Vector3d(0, 0, kTargetAboveRim);
+}
+
+core::RootPlacement BasketballMatch::placement(const Eigen::Vector2d& at,
+                                               const Eigen::Vector2d& facing) {
+  return jittered_start(at, std::atan2(facing.y(), facing.x()), rng_);
+}
+
+void BasketballMatch::present_to(int slot, const core::RootPlacement& at) {
+  presented_slot_ = slot;
+  const Eigen::Vector2d forward(std::cos(at.yaw), std::sin(at.yaw));
+  const Eigen::Vector2d spot = at.position.head<2>() + kPresentForward * forward;
+  present_ = {spot.x(), spot.y(), kPresentHeight};
+  present_until_ = time() + config_.present_s;
+  ball_->set_state(present_, Eigen::Vector3d::Zero());
+}
+
+// The taker (the taking side's player nearest the spot) on the spot, facing the basket for a
+// check ball and away from it (towards the arc it must clear) under the basket; its teammate
+// beside it; the defenders `restart_distance` in front of it, facing it.
+void BasketballMatch::carry_out(const Restart& r) {
+  int taker = -1;
+  double nearest = 1e9;
+  for (int s = 0; s < slot_count(); ++s) {
+    if (team_of(s) != r.team) continue;
+    const double d = (player(s).body_state(0).position.head<2>() - r.spot).norm();
+    if (d < nearest) nearest = d, taker = s;
+  }
+  const Eigen::Vector2d to_rim = -r.spot.normalized();
+  const Eigen::Vector2d facing =
+      r.kind == RestartKind::CheckBall ? to_rim : Eigen::Vector2d(-to_rim);
+  const Eigen::Vector2d across(-facing.y(), facing.x());
+  const core::RootPlacement taken = placement(r.spot, facing);
+  reset_player(taker, taken);
+  int defender = 0;
+  for (int s = 0; s < slot_count(); ++s) {
+    if (s == taker) continue;
+    if (team_of(s) == r.team) {
+      reset_player(s, placement(r.spot + kTeammateAside * across, to_rim));
+      continue;
+    }
+    const double side = defender++ == 0 ? 0.0 : kDefendersApart;
+    const Eigen::Vector2d at = r.spot + config_.restart_distance * facing + side * across;
+    reset_player(s, placement(at, r.spot - at));
+  }
+  present_to(taker, taken);
 }
 
 void BasketballMatch::before_physics_step() {
@@ -60,16 +145,39 @@ void BasketballMatch::before_physics_step() {
 }
 
 void BasketballMatch::after_physics_step(double step_start) {
-  if (step_start < config_.present_s) {  // still presented: it stays on its spot
+  if (step_start < present_until_) {  // still presented: it stays on its spot
     ball_->set_state(present_, Eigen::Vector3d::Zero());
     return;
   }
   const Eigen::Vector3d now = ball_->position();
   if (config_.court.basket(ball_before_step_, now)) basket_this_tick_ = true;
-  if (!presenting() && now.z() - ball_->spec().radius < kFloorTouch) touched_floor_ = true;
+  if (!team_play_) {
+    if (now.z() - ball_->spec().radius < kFloorTouch) touched_floor_ = true;
+    return;
+  }
+  for (const auto& c : scene().world().sensed_contacts()) {
+    if (!c.other) {  // the floor
+      if (!config_.court.inside(now.head<2>())) out_this_tick_ = true;
+    } else if (c.other->entity < 0) {  // the rim, its bracket, the board or the pole
+      referee_.basket_touch();
+    } else {
+      for (int s = 0; s < slot_count(); ++s)
+        if (player(s).entity() == c.other->entity)
+          referee_.touch(s, player(s).body_state(0).position.head<2>(), time());
+    }
+  }
 }
 
 void BasketballMatch::settle_tick() {
+  if (team_play_)
+    settle_team_play();
+  else
+    settle_free_throw();
+  ball_before_tick_ = ball_->position();
+  for (int s = 0; s < slot_count(); ++s) root_before_[s] = player(s).body_state(0).position;
+}
+
+void BasketballMatch::settle_free_throw() {
   const bool basket = basket_this_tick_;
   basket_this_tick_ = false;
   set_reward(0, free_throw_terms(ball_->position(), ball_->velocity(), target(), basket));
@@ -90,14 +198,112 @@ void BasketballMatch::settle_tick() {
   if (!fell_this_tick().empty()) return outcome_.end("fall", -1);
 }
 
-void BasketballMatch::write_task_observation(int, const HeadingFrame& frame,
+TeamPlayState BasketballMatch::reward_state(int slot, const std::array<int, 2>& scored) const {
+  TeamPlayState s;
+  s.root_before = root_before_[slot];
+  s.root = player(slot).body_state(0).position;
+  s.ball_before = ball_before_tick_;
+  s.ball = ball_->position();
+  s.ball_velocity = ball_->velocity();
+  s.target = target();
+  const int mine = team_of(slot), with_ball = referee_.possession();
+  s.possession = with_ball < 0 ? 0 : (with_ball == mine ? 1 : -1);
+  s.points = scored[mine] - scored[1 - mine];
+  s.fallen = down(slot);
+  return s;
+}
+
+void BasketballMatch::settle_team_play() {
+  const std::array<int, 2> before = referee_.score();
+  std::vector<TeamPlayState> states;  // possession as it was during the tick
+  for (int s = 0; s < slot_count(); ++s) states.push_back(reward_state(s, {0, 0}));
+  const auto stop = referee_.update(basket_this_tick_, out_this_tick_, time());
+  basket_this_tick_ = out_this_tick_ = false;
+  const std::array<int, 2>& score = referee_.score();
+  const std::array<int, 2> scored = {score[0] - before[0], score[1] - before[1]};
+  for (int s = 0; s < slot_count(); ++s) {
+    states[s].points = scored[team_of(s)] - scored[1 - team_of(s)];
+    set_reward(s, team_play_terms(states[s]));
+  }
+  outcome_.scores = {static_cast<float>(score[0]), static_cast<float>(score[1])};
+  if (stop) log_stoppage(*stop);
+  outcome_.info["score"] = score_json();
+  if (referee_.winner() >= 0) {
+    outcome_.info["baskets"] = baskets_;
+    return outcome_.end("points_reached", referee_.winner());
+  }
+  if (stop) carry_out(stop->restart);
+}
+
+void BasketballMatch::log_stoppage(const Stoppage& s) {
+  if (s.basket) {
+    const BasketCall& b = *s.basket;
+    nlohmann::json e = referee_event(b.counted ? "basket" : "not_cleared", time(), b.shooter);
+    e["team"] = b.team;
+    e["points"] = b.points;
+    e["counted"] = b.counted;
+    e["x"] = tenths(b.release.x());
+    e["y"] = tenths(b.release.y());
+    log(std::move(e));
+    if (b.counted)
+      baskets_.push_back({{"team", b.team},
+                          {"shooter_slot", b.shooter},
+                          {"points", b.points},
+                          {"t", tenths(time())},
+                          {"score", score_json()["text"]}});
+  } else if (s.reason == "out") {
+    nlohmann::json e = referee_event("out", time());
+    e["last_touch_slot"] = s.last_touch;
+    log(std::move(e));
+  } else if (s.reason == "shot_clock") {
+    nlohmann::json e = referee_event("shot_clock", time());
+    e["team"] = 1 - s.restart.team;
+    log(std::move(e));
+  }
+  nlohmann::json e = referee_event("restart", time());
+  e["kind"] = restart_name(s.restart.kind);
+  e["team"] = s.restart.team;
+  e["x"] = tenths(s.restart.spot.x());
+  e["y"] = tenths(s.restart.spot.y());
+  log(std::move(e));
+}
+
+nlohmann::json BasketballMatch::score_json() const {
+  const auto& score = referee_.score();
+  return {{"points", {score[0], score[1]}},
+          {"text", std::to_string(score[0]) + "-" + std::to_string(score[1])}};
+}
+
+void BasketballMatch::on_time_limit() {
+  if (team_play_) outcome_.info["baskets"] = baskets_;
+  end_by_time_limit(leading_team());
+}
+
+void BasketballMatch::write_task_observation(int slot, const HeadingFrame& frame,
                                              ObservationWriter& out) const {
   write_ball_observation(*ball_, frame, out);
   out.begin("rim").put(frame.point(config_.court.rim_centre()));
-  out.begin("target").put(frame.vector(target() - ball_->position()));
-  out.begin("throw")
+  if (!team_play_) {
+    out.begin("target").put(frame.vector(target() - ball_->position()));
+    out.begin("throw")
+        .put(1.0 - static_cast<double>(tick()) / time_limit_ticks())
+        .put(presenting() ? 1.0 : 0.0);
+    return;
+  }
+  const Court& court = config_.court;
+  out.begin("arc")
+      .put(court.beyond_arc(frame.root.position.head<2>()))
+      .put(court.beyond_arc(ball_->position().head<2>()));
+  write_team_blocks(*this, slot, frame, out);
+  const int mine = team_of(slot), with_ball = referee_.possession();
+  out.begin("game")
+      .put(referee_.score()[mine])
+      .put(referee_.score()[1 - mine])
       .put(1.0 - static_cast<double>(tick()) / time_limit_ticks())
-      .put(presenting() ? 1.0 : 0.0);
+      .put(referee_.shot_clock_left(time()))
+      .put(with_ball < 0 ? 0.0 : (with_ball == mine ? 1.0 : -1.0))
+      .put(referee_.cleared() ? 1.0 : 0.0)
+      .put(presenting() && presented_slot_ == slot ? 1.0 : 0.0);
 }
 
 void BasketballMatch::extra_state(std::vector<double>& values) const {

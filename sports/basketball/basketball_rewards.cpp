@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "framework/ball_progress.h"
+
 namespace olympics::sports::basketball {
 
 std::vector<RewardTerm> free_throw_rewards() {
@@ -25,10 +27,27 @@ Eigen::Vector3d desired_launch_velocity(const Eigen::Vector3d& ball,
 std::array<float, 3> free_throw_terms(const Eigen::Vector3d& ball, const Eigen::Vector3d& velocity,
                                       const Eigen::Vector3d& target, bool basket) {
   const Eigen::Vector3d miss = velocity - desired_launch_velocity(ball, target);
-  const Eigen::Vector3d to_target = target - ball;
-  const double towards = to_target.norm() > 1e-9 ? velocity.dot(to_target.normalized()) : 0.0;
-  return {static_cast<float>(std::exp(-0.1 * miss.squaredNorm())), static_cast<float>(towards),
-          basket ? 1.0f : 0.0f};
+  return {static_cast<float>(std::exp(-0.1 * miss.squaredNorm())),
+          static_cast<float>(ball_speed_towards(target, ball, velocity)), basket ? 1.0f : 0.0f};
+}
+
+std::vector<RewardTerm> team_play_rewards() {
+  return {{"player_to_ball", 0.4, "m/tick the root came closer to the ball"},
+          {"ball_to_basket", 0.1,
+           "m/tick the ball came closer to the target above the rim (negative for the side "
+           "without the ball)"},
+          {"ball_velocity_to_basket", 0.1,
+           "m/s of the ball towards the target (negative for the side without the ball)"},
+          {"points", 10.0, "the points my side scored this tick minus those it conceded"},
+          {"fallen", 0.0, "1 while the player is down (falls are not penalised by default)"}};
+}
+
+std::array<float, 5> team_play_terms(const TeamPlayState& s) {
+  const double side = s.possession;
+  return {static_cast<float>(approach_to_ball(s.root_before, s.root, s.ball)),
+          static_cast<float>(side * ball_progress(s.target, s.ball_before, s.ball)),
+          static_cast<float>(side * ball_speed_towards(s.target, s.ball, s.ball_velocity)),
+          static_cast<float>(s.points), s.fallen ? 1.0f : 0.0f};
 }
 
 }  // namespace olympics::sports::basketball

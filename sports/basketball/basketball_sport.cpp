@@ -6,7 +6,9 @@ BasketballSport::BasketballSport()
     : modes_("basketball",
              {{"free_throw",
                {0},
-               "one shooter behind the free-throw line, the ball presented between its hands"}}) {}
+               "one shooter behind the free-throw line, the ball presented between its hands"},
+              {"1v1", {0, 1}, "a half-court game between two players (3x3 rules)"},
+              {"2v2", {0, 0, 1, 1}, "a half-court game between two teams of two (3x3 rules)"}}) {}
 
 std::vector<SettingSpec> BasketballSport::settings() const {
   return {
@@ -15,8 +17,16 @@ std::vector<SettingSpec> BasketballSport::settings() const {
       SettingSpec::number("free_throw_distance", 4.6, "m from the backboard's plane to the line",
                           1.0, 8.0),
       SettingSpec::number("present_s", 0.5,
-                          "s the ball is held still between the shooter's hands at the start", 0,
-                          3),
+                          "s the ball is held still between the shooter's (or a restart's "
+                          "taker's) hands",
+                          0, 3),
+      SettingSpec::number("points_to_win", 21, "team play: the game ends when a side has these", 1,
+                          100),
+      SettingSpec::number("game_s", 600,
+                          "team play: s of game time (the match's default time limit)", 5, 3600),
+      SettingSpec::number("shot_clock_s", 12, "team play: s to get a shot to the basket", 3, 60),
+      SettingSpec::number("restart_distance", 2.0,
+                          "team play: m the defenders stand from a restart's taker", 1, 6),
   };
 }
 
@@ -26,19 +36,26 @@ BasketballConfig BasketballSport::config(const nlohmann::json& options) const {
   c.court.rim_height = s.at("rim_height");
   c.court.free_throw_distance = s.at("free_throw_distance");
   c.present_s = s.at("present_s");
+  c.rules.points_to_win = s.at("points_to_win");
+  c.rules.shot_clock_s = s.at("shot_clock_s");
+  c.restart_distance = s.at("restart_distance");
+  c.game_s = s.at("game_s");
   return c;
 }
 
 std::unique_ptr<SportMatch> BasketballSport::create(const MatchSettings& settings) const {
   MatchSettings s = settings;
   const BasketballConfig c = config(s.options);
-  if (s.time_limit_s <= 0) s.time_limit_s = default_time_limit_s();
-  return std::make_unique<BasketballMatch>(c, modes_.at(s.mode), layout(s.mode), s);
+  const ModeSpec& mode = modes_.at(s.mode);
+  if (s.time_limit_s <= 0) s.time_limit_s = is_team_play(mode.name) ? c.game_s : kFreeThrowS;
+  return std::make_unique<BasketballMatch>(c, mode, layout(s.mode), s);
 }
 
 Layout BasketballSport::layout(const std::string& mode) const {
-  modes_.at(mode);
-  return smplx_layout(free_throw_layout(), free_throw_rewards(), basketball_calls());
+  const ModeSpec& m = modes_.at(mode);
+  return smplx_layout(basketball_task_layout(m),
+                      is_team_play(m.name) ? team_play_rewards() : free_throw_rewards(),
+                      basketball_calls());
 }
 
 }  // namespace olympics::sports::basketball

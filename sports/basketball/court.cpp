@@ -1,5 +1,6 @@
 #include "basketball/court.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace olympics::sports::basketball {
@@ -12,8 +13,8 @@ constexpr double kLaneHalfWidth = 2.45;  // FIBA's restricted area: 4.9 m wide
 
 }  // namespace
 
-bool Court::behind_arc(const Eigen::Vector2d& p) const {
-  return std::abs(p.y()) > corner_line || p.norm() > arc_radius;
+double Court::beyond_arc(const Eigen::Vector2d& p) const {
+  return std::max(p.norm() - arc_radius, std::abs(p.y()) - corner_line);
 }
 
 bool Court::inside(const Eigen::Vector2d& p) const {

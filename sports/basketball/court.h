@@ -36,7 +36,9 @@ struct Court {
   double far_line_x() const { return kRimToBaseline - depth; }
   double free_throw_line_x() const { return board_face_x() - free_throw_distance; }
   // A point on the floor behind the 2-point arc (a shot released there is worth 2).
-  bool behind_arc(const Eigen::Vector2d& p) const;
+  bool behind_arc(const Eigen::Vector2d& p) const { return beyond_arc(p) > 0; }
+  // How far a point is beyond the arc (its curve or the straight corner lines), negative inside.
+  double beyond_arc(const Eigen::Vector2d& p) const;
   // Is the point (x, y) on the court (inside the lines)?
   bool inside(const Eigen::Vector2d& p) const;
   // Did a ball whose centre went from `before` to `after` in one physics step pass downward
