@@ -7,6 +7,7 @@
 
 #include "core/control_rate.h"
 #include "core/humanoid_scene.h"
+#include "policies.h"
 #include "registry.h"
 
 namespace olympics::bench {
@@ -23,6 +24,31 @@ client::MatchInfo in_process_match_info(const std::string& sport, const std::str
           client::ObservationLayout::from_blocks(match.layout().observation), match.action_size()};
 }
 
+std::unique_ptr<sports::SportMatch> play_in_process(
+    const std::string& sport, const sports::MatchSettings& settings,
+    const std::vector<std::string>& policies,
+    const std::function<void(const sports::SportMatch&)>& after_tick) {
+  auto match = sports::sport_or_throw(sport).create(settings);
+  const int n = match->slot_count();
+  std::vector<std::unique_ptr<client::Policy>> players;
+  for (int s = 0; s < n; ++s) {
+    players.push_back(client::make_policy(policies[s], 100 * settings.seed + s));
+    players.back()->start(in_process_match_info(sport, settings.mode, *match));
+  }
+  std::vector<std::vector<float>> obs(n, std::vector<float>(match->obs_size())),
+      act(n, std::vector<float>(match->action_size()));
+  std::vector<std::span<const float>> actions(act.begin(), act.end());
+  while (!match->outcome().match_over) {
+    for (int s = 0; s < n; ++s) {
+      match->observe(s, obs[s]);
+      players[s]->act(obs[s], act[s]);
+    }
+    match->step(actions);
+    if (after_tick) after_tick(*match);
+  }
+  return match;
+}
+
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
@@ -32,8 +58,8 @@ double match_ticks_per_s(const std::string& sport, double seconds, int ticks_per
                          const std::string& mode) {
   const auto& s = sports::sport_or_throw(sport);
   const int slots = s.modes().at(mode).slot_count();
-  std::vector<float> act(69, 0.0f);
-  std::vector<std::span<const float>> actions(slots, std::span<const float>(act));
+  std::vector<float> act;
+  std::vector<std::span<const float>> actions;
   std::vector<float> obs;
   long ticks = 0;
   double stepping = 0;
@@ -41,6 +67,8 @@ double match_ticks_per_s(const std::string& sport, double seconds, int ticks_per
   while (stepping < seconds) {
     auto match = s.create({mode, seed++, 60.0, {}});
     obs.resize(match->obs_size());
+    act.assign(match->action_size(), 0.0f);
+    actions.assign(slots, std::span<const float>(act));
     const auto start = Clock::now();
     for (int t = 0; t < ticks_per_match && !match->outcome().match_over; ++t, ++ticks) {
       for (int slot = 0; slot < slots; ++slot) match->observe(slot, obs);
@@ -53,7 +81,7 @@ double match_ticks_per_s(const std::string& sport, double seconds, int ticks_per
 
 double bare_ticks_per_s(const core::ModelSpec& spec, double seconds, int ticks_per_match,
                         int players) {
-  std::vector<float> act(69, 0.0f);
+  std::vector<float> act(spec.dof_count(), 0.0f);
   long ticks = 0;
   double stepping = 0;
   while (stepping < seconds) {

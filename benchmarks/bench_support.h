@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -17,6 +18,13 @@ namespace olympics::bench {
 // through match_created_t).
 client::MatchInfo in_process_match_info(const std::string& sport, const std::string& mode,
                                         const sports::SportMatch& match);
+
+// Plays a match in process to its end, one policy per slot (client::make_policy's names, seeded
+// 100 * seed + slot), calling `after_tick` (if any) after every tick; the match as it ended.
+std::unique_ptr<sports::SportMatch> play_in_process(
+    const std::string& sport, const sports::MatchSettings& settings,
+    const std::vector<std::string>& policies,
+    const std::function<void(const sports::SportMatch&)>& after_tick = {});
 
 double median(std::vector<double> v);
 

@@ -5,11 +5,13 @@
 //   olympics-bench racket  [--json] [--episodes N] [--seconds S] [--repeats R]
 //   olympics-bench combat  [--json] [--bouts N] [--seconds S] [--repeats R]
 //   olympics-bench soccer  [--json] [--kicks N] [--matches M] [--half-s S] [--policies P,..]
+//   olympics-bench basketball [--json] [--throws N] [--policies P,..]
 //   olympics-bench soak    [--json] [--minutes M] [--matches N] [--workers W] (an hour; not CI)
 //   olympics-bench vector  [--json] [--envs N] [--workers W] [--seconds S] [--connect URL]
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
+#include "basketball_bench.h"
 #include "combat_bench.h"
 #include "physics_bench.h"
 #include "racket_bench.h"
@@ -83,6 +85,20 @@ int main(int argc, char** argv) {
   socc->add_option("--seconds", soccer.seconds, "wall seconds per speed measurement")
       ->check(CLI::PositiveNumber);
   socc->add_option("--repeats", soccer.repeats, "interleaved repeats (median reported)")
+      ->check(CLI::PositiveNumber);
+  olympics::bench::BasketballBenchOptions basketball;
+  auto* bask = app.add_subcommand(
+      "basketball", "basketball: free throws made by policy, 1v1 and 2v2 ticks/s vs bare physics");
+  bask->add_flag("--json", json, "print one JSON object instead of a table");
+  bask->add_option("--throws", basketball.throws, "free throws per policy (seeds 1..N)")
+      ->check(CLI::PositiveNumber);
+  bask->add_option("--policies", basketball.policies,
+                   "free-throw shooters: zero, random, mlp:FILE (comma-separated)")
+      ->delimiter(',');
+  bask->add_flag("--no-speed{false}", basketball.speed, "skip the ticks/s measurements");
+  bask->add_option("--seconds", basketball.seconds, "wall seconds per speed measurement")
+      ->check(CLI::PositiveNumber);
+  bask->add_option("--repeats", basketball.repeats, "interleaved repeats (median reported)")
       ->check(CLI::PositiveNumber);
   olympics::bench::CombatBenchOptions combat;
   auto* comb = app.add_subcommand(
@@ -175,6 +191,13 @@ int main(int argc, char** argv) {
       std::printf("%s\n", report.dump(2).c_str());
     else
       olympics::bench::print_soccer_report(report);
+  }
+  if (*bask) {
+    auto report = olympics::bench::run_basketball_bench(basketball);
+    if (json)
+      std::printf("%s\n", report.dump(2).c_str());
+    else
+      olympics::bench::print_basketball_report(report);
   }
   if (*vect) {
     auto report = olympics::bench::run_vector_bench(vector);

@@ -5,7 +5,6 @@
 
 #include "bench_support.h"
 #include "core/humanoid_assets.h"
-#include "policies.h"
 #include "registry.h"
 #include "soccer/soccer_match.h"
 
@@ -17,28 +16,13 @@ namespace {
 nlohmann::json play(const std::string& mode, std::uint64_t seed,
                     const std::vector<std::string>& policies, const nlohmann::json& options,
                     std::map<std::string, int>& calls, std::vector<int>& touched) {
-  const auto& sport = sports::sport_or_throw("soccer");
-  auto match = sport.create({mode, seed, 0.0, options});
-  const int n = match->slot_count();
-  std::vector<std::unique_ptr<client::Policy>> players;
-  for (int s = 0; s < n; ++s) {
-    players.push_back(client::make_policy(policies[s], 100 * seed + s));
-    players.back()->start(in_process_match_info("soccer", mode, *match));
-  }
-  std::vector<std::vector<float>> obs(n, std::vector<float>(match->obs_size())),
-      act(n, std::vector<float>(match->action_size()));
-  std::vector<std::span<const float>> actions(act.begin(), act.end());
-  touched.assign(n, 0);
-  const auto* soccer = dynamic_cast<const sports::soccer::SoccerMatch*>(match.get());
-  while (!match->outcome().match_over) {
-    for (int s = 0; s < n; ++s) {
-      match->observe(s, obs[s]);
-      players[s]->act(obs[s], act[s]);
-    }
-    match->step(actions);
-    for (int s = 0; s < n; ++s) touched[s] |= soccer->touched_this_tick(s);
-    for (const auto& e : match->outcome().info["events"]) ++calls[e["call"].get<std::string>()];
-  }
+  touched.assign(policies.size(), 0);
+  const auto match = play_in_process(
+      "soccer", {mode, seed, 0.0, options}, policies, [&](const sports::SportMatch& m) {
+        const auto& soccer = dynamic_cast<const sports::soccer::SoccerMatch&>(m);
+        for (int s = 0; s < m.slot_count(); ++s) touched[s] |= soccer.touched_this_tick(s);
+        for (const auto& e : m.outcome().info["events"]) ++calls[e["call"].get<std::string>()];
+      });
   const auto& o = match->outcome();
   return {{"reason", o.reason},
           {"winner_team", o.winner_team},

@@ -229,13 +229,19 @@ void BasketballMatch::settle_team_play() {
   if (stop) log_stoppage(*stop);
   outcome_.info["score"] = score_json();
   if (referee_.winner() >= 0) {
-    outcome_.info["baskets"] = baskets_;
+    write_game_summary();
     return outcome_.end("points_reached", referee_.winner());
   }
   if (stop) carry_out(stop->restart);
 }
 
+void BasketballMatch::write_game_summary() {
+  outcome_.info["baskets"] = baskets_;
+  outcome_.info["stoppages"] = stoppages_;
+}
+
 void BasketballMatch::log_stoppage(const Stoppage& s) {
+  if (s.reason != "start") stoppages_[s.reason] = stoppages_.value(s.reason, 0) + 1;
   if (s.basket) {
     const BasketCall& b = *s.basket;
     nlohmann::json e = referee_event(b.counted ? "basket" : "not_cleared", time(), b.shooter);
@@ -275,7 +281,7 @@ nlohmann::json BasketballMatch::score_json() const {
 }
 
 void BasketballMatch::on_time_limit() {
-  if (team_play_) outcome_.info["baskets"] = baskets_;
+  if (team_play_) write_game_summary();
   end_by_time_limit(leading_team());
 }
 

@@ -76,6 +76,8 @@ class BasketballMatch : public SmplMatch {
   core::RootPlacement placement(const Eigen::Vector2d& at, const Eigen::Vector2d& facing);
   TeamPlayState reward_state(int slot, const std::array<int, 2>& scored) const;
   nlohmann::json score_json() const;
+  // At the end: every counted basket and how often play stopped for each reason.
+  void write_game_summary();
 
   BasketballConfig config_;
   bool team_play_;
@@ -91,7 +93,8 @@ class BasketballMatch : public SmplMatch {
   bool basket_this_tick_ = false;
   bool touched_floor_ = false;  // free throw: after the presentation
   bool out_this_tick_ = false;  // team play: the ball on the floor outside the lines
-  nlohmann::json baskets_ = nlohmann::json::array();  // every counted basket, for the result
+  nlohmann::json baskets_ = nlohmann::json::array();     // every counted basket, for the result
+  nlohmann::json stoppages_ = nlohmann::json::object();  // reason -> count
 };
 
 }  // namespace olympics::sports::basketball

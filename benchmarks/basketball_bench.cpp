@@ -1,0 +1,54 @@
+#include "basketball_bench.h"
+
+#include <cstdio>
+#include <map>
+
+#include "bench_support.h"
+#include "core/humanoid_assets.h"
+
+namespace olympics::bench {
+namespace {
+
+nlohmann::json free_throws(const std::string& policy, int throws) {
+  int made = 0;
+  std::map<std::string, int> endings;
+  for (int k = 1; k <= throws; ++k) {
+    const auto match =
+        play_in_process("basketball", {"free_throw", static_cast<std::uint64_t>(k)}, {policy});
+    made += match->outcome().reason == "basket";
+    ++endings[match->outcome().reason];
+  }
+  return {{"throws", throws}, {"made", static_cast<double>(made) / throws}, {"endings", endings}};
+}
+
+}  // namespace
+
+nlohmann::json run_basketball_bench(const BasketballBenchOptions& o) {
+  nlohmann::json report = {{"free_throw", nlohmann::json::object()}};
+  for (const auto& p : o.policies) report["free_throw"][p] = free_throws(p, o.throws);
+  if (o.speed) {
+    static const core::ModelSpec smplx = core::load_humanoid(core::HumanoidKind::SmplX);
+    for (const char* mode : {"1v1", "2v2"})
+      report["speed_" + std::string(mode)] =
+          speed_vs_bare("basketball", smplx, o.seconds, o.repeats, 45, mode);
+  }
+  return report;
+}
+
+void print_basketball_report(const nlohmann::json& r) {
+  for (const auto& [policy, f] : r["free_throw"].items())
+    std::printf("free throw, %-9s %d throws: made %.0f%%; endings %s\n", policy.c_str(),
+                f["throws"].get<int>(), 100 * f["made"].get<double>(), f["endings"].dump().c_str());
+  for (const char* mode : {"1v1", "2v2"}) {
+    const std::string key = "speed_" + std::string(mode);
+    if (!r.contains(key)) continue;
+    const auto& v = r[key];
+    std::printf(
+        "%s ticks/s on one core (zero actions, first %d ticks): match %.0f, bare physics of as "
+        "many SMPL-X humanoids %.0f, ratio %.2f\n",
+        mode, v["ticks_per_match"].get<int>(), v["match_ticks_per_s"].get<double>(),
+        v["bare_physics_ticks_per_s"].get<double>(), v["ratio"].get<double>());
+  }
+}
+
+}  // namespace olympics::bench

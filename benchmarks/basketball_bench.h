@@ -1,0 +1,24 @@
+// Basketball figures, the yardsticks learned players must beat: free throws with fixed seeds
+// (1..N) by policy (the fraction made, how they ended), and ticks/s of 1v1 and 2v2 (two and four
+// SMPL-X humanoids, the court and the ball) against the bare physics of as many SMPL-X
+// humanoids, measured interleaved.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace olympics::bench {
+
+struct BasketballBenchOptions {
+  int throws = 100;  // free throws per policy (seeds 1..N)
+  std::vector<std::string> policies = {"zero", "random"};
+  double seconds = 2;  // wall seconds per speed measurement
+  int repeats = 3;
+  bool speed = true;
+};
+
+nlohmann::json run_basketball_bench(const BasketballBenchOptions& options);
+void print_basketball_report(const nlohmann::json& report);
+
+}  // namespace olympics::bench

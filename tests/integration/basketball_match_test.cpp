@@ -1,0 +1,39 @@
+// Basketball over LCM: a 1v1 between two agent processes played to its time limit under a short
+// shot clock, stored with its score and the rule calls that were made, replaying bit for bit.
+#include "server_fixture.h"
+
+namespace olympics::testing {
+namespace {
+
+TEST(BasketballMatch, A1v1BetweenTwoAgentProcessesIsStoredWithItsScoreAndReplays) {
+  ServerFixture server;
+  const std::vector<std::string> common = {
+      "--request-id", "pickup", "--sport",  "basketball", "--mode",
+      "1v1",          "--seed", "4",        "--options",  R"({"shot_clock_s": 3})",
+      "--time-limit", "8",      "--policy", "random"};
+  auto home = common, away = common;
+  home.insert(home.end(), {"--slots", "0", "--policy-seed", "1"});
+  away.insert(away.end(), {"--slots", "1", "--policy-seed", "2"});
+  auto a = server.agent("home", home), b = server.agent("away", away);
+  ASSERT_EQ(a->wait(300), 0) << a->output();
+  ASSERT_EQ(b->wait(300), 0) << b->output();
+  const auto r = ServerFixture::agent_result(*a);
+  EXPECT_EQ(r, ServerFixture::agent_result(*b));
+  EXPECT_EQ(r.at("reason"), "time_limit") << r.dump();
+  auto stored = server.store()->find(r.at("match_id"));
+  ASSERT_TRUE(stored.has_value());
+  EXPECT_EQ(stored->sport, "basketball");
+  EXPECT_EQ(stored->mode, "1v1");
+  ASSERT_EQ(stored->participants.size(), 2u);
+  const auto info = nlohmann::json::parse(stored->info);
+  EXPECT_EQ(info.at("score").at("text"), "0-0") << stored->info;
+  // Nobody shoots in 8 s of random play: the 3 s shot clock runs out twice, each time giving
+  // the other side a check ball.
+  EXPECT_EQ(info.at("stoppages"), nlohmann::json({{"shot_clock", 2}})) << stored->info;
+  EXPECT_TRUE(info.at("baskets").empty());
+  const auto check = server::verify_replay(server.replay(r.at("match_id")));
+  EXPECT_TRUE(check.identical) << check.report;
+}
+
+}  // namespace
+}  // namespace olympics::testing
