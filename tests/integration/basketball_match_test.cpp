@@ -11,14 +11,9 @@ TEST(BasketballMatch, A1v1BetweenTwoAgentProcessesIsStoredWithItsScoreAndReplays
       "--request-id", "pickup", "--sport",  "basketball", "--mode",
       "1v1",          "--seed", "4",        "--options",  R"({"shot_clock_s": 3})",
       "--time-limit", "8",      "--policy", "random"};
-  auto home = common, away = common;
-  home.insert(home.end(), {"--slots", "0", "--policy-seed", "1"});
-  away.insert(away.end(), {"--slots", "1", "--policy-seed", "2"});
-  auto a = server.agent("home", home), b = server.agent("away", away);
-  ASSERT_EQ(a->wait(300), 0) << a->output();
-  ASSERT_EQ(b->wait(300), 0) << b->output();
-  const auto r = ServerFixture::agent_result(*a);
-  EXPECT_EQ(r, ServerFixture::agent_result(*b));
+  const auto r = server.two_agents(common, {"--slots", "0", "--policy-seed", "1"},
+                                   {"--slots", "1", "--policy-seed", "2"});
+  ASSERT_FALSE(r.empty());
   EXPECT_EQ(r.at("reason"), "time_limit") << r.dump();
   auto stored = server.store()->find(r.at("match_id"));
   ASSERT_TRUE(stored.has_value());

@@ -14,15 +14,7 @@ nlohmann::json bout(ServerFixture& server, const std::string& sport, const std::
   const std::vector<std::string> common = {"--request-id", id,      "--sport",  sport,
                                            "--mode",       "1v1",   "--seed",   "3",
                                            "--options",    options, "--policy", "scripted"};
-  auto a = common, b = common;
-  a.insert(a.end(), {"--slots", "0"});
-  b.insert(b.end(), {"--slots", "1", "--policy-seed", "2"});
-  auto p0 = server.agent("red", a), p1 = server.agent("green", b);
-  EXPECT_EQ(p0->wait(240), 0) << p0->output();
-  EXPECT_EQ(p1->wait(240), 0) << p1->output();
-  auto result = ServerFixture::agent_result(*p0);
-  EXPECT_EQ(result, ServerFixture::agent_result(*p1));
-  return result;
+  return server.two_agents(common, {"--slots", "0"}, {"--slots", "1", "--policy-seed", "2"}, 240);
 }
 
 TEST(CombatMatch, AFencingBoutIsPlayedToItsTouchesAndStored) {

@@ -11,15 +11,8 @@ nlohmann::json play_to_the_end(ServerFixture& server, const std::string& sport,
                                const std::string& options, const std::string& id) {
   const std::vector<std::string> common = {
       "--request-id", id, "--sport", sport, "--mode", "1v1", "--seed", "4", "--options", options};
-  auto a = common, b = common;
-  a.insert(a.end(), {"--slots", "0", "--policy", "scripted"});
-  b.insert(b.end(), {"--slots", "1", "--policy", "random", "--policy-seed", "2"});
-  auto p0 = server.agent("scripted", a), p1 = server.agent("random", b);
-  EXPECT_EQ(p0->wait(240), 0) << p0->output();
-  EXPECT_EQ(p1->wait(240), 0) << p1->output();
-  auto result = ServerFixture::agent_result(*p0);
-  EXPECT_EQ(result, ServerFixture::agent_result(*p1));
-  return result;
+  return server.two_agents(common, {"--slots", "0", "--policy", "scripted"},
+                           {"--slots", "1", "--policy", "random", "--policy-seed", "2"}, 240);
 }
 
 TEST(RacketMatch, FullTennisSetIsPlayedAndStoredWithItsScore) {

@@ -58,6 +58,23 @@ class ServerFixture {
     return std::make_unique<Process>(argv, dir_ + "/agent-" + name + ".log");
   }
 
+  // One match between two agent processes: `common` arguments for both, then each side's own.
+  // Both must exit 0 and print the same result, which is returned (empty if they did not).
+  nlohmann::json two_agents(const std::vector<std::string>& common,
+                            const std::vector<std::string>& first,
+                            const std::vector<std::string>& second, double timeout_s = 300) {
+    auto a = common, b = common;
+    a.insert(a.end(), first.begin(), first.end());
+    b.insert(b.end(), second.begin(), second.end());
+    auto pa = agent("first", a), pb = agent("second", b);
+    const bool ok = pa->wait(timeout_s) == 0 && pb->wait(timeout_s) == 0;
+    EXPECT_TRUE(ok) << "first:\n" << pa->output() << "\nsecond:\n" << pb->output();
+    if (!ok) return nlohmann::json::object();
+    const nlohmann::json result = agent_result(*pa);
+    EXPECT_EQ(result, agent_result(*pb));
+    return result;
+  }
+
   // The JSON result line an agent printed (empty object if none).
   static nlohmann::json agent_result(const Process& p) {
     std::string out = p.output();

@@ -16,14 +16,8 @@ TEST(SoccerMatch, A2v2BetweenTwoAgentProcessesIsStoredWithItsGoalsAndScorers) {
   const std::vector<std::string> common = {"--request-id", "derby",  "--sport",  "soccer",
                                            "--mode",       "2v2",    "--seed",   "1",
                                            "--options",    kOptions, "--policy", "scripted"};
-  auto home = common, away = common;
-  home.insert(home.end(), {"--slots", "0,1"});
-  away.insert(away.end(), {"--slots", "2,3"});
-  auto a = server.agent("home", home), b = server.agent("away", away);
-  ASSERT_EQ(a->wait(300), 0) << a->output();
-  ASSERT_EQ(b->wait(300), 0) << b->output();
-  const auto r = ServerFixture::agent_result(*a);
-  EXPECT_EQ(r, ServerFixture::agent_result(*b));
+  const auto r = server.two_agents(common, {"--slots", "0,1"}, {"--slots", "2,3"});
+  ASSERT_FALSE(r.empty());
   EXPECT_EQ(r.at("reason"), "time_limit") << r.dump();
   auto stored = server.store()->find(r.at("match_id"));
   ASSERT_TRUE(stored.has_value());
