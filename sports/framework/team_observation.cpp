@@ -1,23 +1,23 @@
 #include "framework/team_observation.h"
 
-#include <algorithm>
-
 namespace olympics::sports {
 namespace {
 
-int teammates_of_slot_0(const ModeSpec& mode) {
-  return static_cast<int>(
-             std::count(mode.slot_teams.begin(), mode.slot_teams.end(), mode.slot_teams[0])) -
-         1;
+// How many players share `slot`'s team, `team_of` giving each slot's.
+template <typename TeamOf>
+int teammates(int slots, int slot, const TeamOf& team_of) {
+  int n = 0;
+  for (int s = 0; s < slots; ++s) n += s != slot && team_of(s) == team_of(slot);
+  return n;
 }
 
 }  // namespace
 
 void append_team_blocks(const ModeSpec& mode, std::vector<LayoutBlock>& blocks) {
-  const int teammates = teammates_of_slot_0(mode);
-  const int opponents = mode.slot_count() - teammates - 1;
-  if (teammates > 0)
-    blocks.push_back({"teammates", 6 * teammates, "m, m/s",
+  const int mates = teammates(mode.slot_count(), 0, [&](int s) { return mode.slot_teams[s]; });
+  const int opponents = mode.slot_count() - mates - 1;
+  if (mates > 0)
+    blocks.push_back({"teammates", 6 * mates, "m, m/s",
                       "each teammate's root position (3) and velocity (3), heading frame, in slot "
                       "order"});
   if (opponents > 0)
@@ -35,11 +35,9 @@ void write_team_blocks(const SmplMatch& match, int slot, const HeadingFrame& fra
       out.put(frame.point(st.position)).put(frame.vector(st.linear_velocity));
     }
   };
-  int teammates = 0;
-  for (int s = 0; s < match.slot_count(); ++s)
-    teammates += s != slot && match.team_of(s) == match.team_of(slot);
-  if (teammates > 0) others((out.begin("teammates"), true));
-  if (match.slot_count() - teammates - 1 > 0) others((out.begin("opponents"), false));
+  const int mates = teammates(match.slot_count(), slot, [&](int s) { return match.team_of(s); });
+  if (mates > 0) others((out.begin("teammates"), true));
+  if (match.slot_count() - mates - 1 > 0) others((out.begin("opponents"), false));
 }
 
 }  // namespace olympics::sports
