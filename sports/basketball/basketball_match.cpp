@@ -198,7 +198,7 @@ void BasketballMatch::settle_free_throw() {
   if (!fell_this_tick().empty()) return outcome_.end("fall", -1);
 }
 
-TeamPlayState BasketballMatch::reward_state(int slot, const std::array<int, 2>& scored) const {
+TeamPlayState BasketballMatch::reward_state(int slot) const {
   TeamPlayState s;
   s.root_before = root_before_[slot];
   s.root = player(slot).body_state(0).position;
@@ -208,7 +208,6 @@ TeamPlayState BasketballMatch::reward_state(int slot, const std::array<int, 2>& 
   s.target = target();
   const int mine = team_of(slot), with_ball = referee_.possession();
   s.possession = with_ball < 0 ? 0 : (with_ball == mine ? 1 : -1);
-  s.points = scored[mine] - scored[1 - mine];
   s.fallen = down(slot);
   return s;
 }
@@ -216,7 +215,7 @@ TeamPlayState BasketballMatch::reward_state(int slot, const std::array<int, 2>& 
 void BasketballMatch::settle_team_play() {
   const std::array<int, 2> before = referee_.score();
   std::vector<TeamPlayState> states;  // possession as it was during the tick
-  for (int s = 0; s < slot_count(); ++s) states.push_back(reward_state(s, {0, 0}));
+  for (int s = 0; s < slot_count(); ++s) states.push_back(reward_state(s));
   const auto stop = referee_.update(basket_this_tick_, out_this_tick_, time());
   basket_this_tick_ = out_this_tick_ = false;
   const std::array<int, 2>& score = referee_.score();

@@ -74,7 +74,8 @@ class BasketballMatch : public SmplMatch {
   void carry_out(const Restart& r);
   void log_stoppage(const Stoppage& s);
   core::RootPlacement placement(const Eigen::Vector2d& at, const Eigen::Vector2d& facing);
-  TeamPlayState reward_state(int slot, const std::array<int, 2>& scored) const;
+  // A slot's tick as the rewards need it, possession as it stands; `points` is left at 0.
+  TeamPlayState reward_state(int slot) const;
   nlohmann::json score_json() const;
   // At the end: every counted basket and how often play stopped for each reason.
   void write_game_summary();
