@@ -40,17 +40,6 @@ nlohmann::json play_until(SportMatch& m, const std::string& call, int ticks) {
   return events;
 }
 
-// Index of a named block in the observation.
-int block_offset(const SportMatch& m, const std::string& name) {
-  int offset = 0;
-  for (const auto& b : m.layout().observation) {
-    if (b.name == name) return offset;
-    offset += b.size;
-  }
-  ADD_FAILURE() << "no block " << name;
-  return 0;
-}
-
 TEST(BasketballGame, TheGameStartsWithACheckBallPresentedToTheTakerAndTheDefenceKeptOff) {
   for (const std::string mode : {"1v1", "2v2"}) {
     auto m = game(mode, 5);

@@ -14,6 +14,7 @@
 #include "fencing/fencing_match.h"
 #include "policies.h"
 #include "registry.h"
+#include "zero_play.h"
 
 namespace olympics::sports {
 namespace {
@@ -47,10 +48,6 @@ Played play(const std::string& sport, const std::string& p0, const std::string& 
     for (const auto& e : m.outcome().info["events"]) out.events.push_back(e);
   }
   return out;
-}
-
-int block_offset(const SportMatch& m, const std::string& name) {
-  return client::ObservationLayout::from_blocks(m.layout().observation).offset(name);
 }
 
 const std::set<std::string> kTargets = {"Pelvis", "Torso", "Spine", "Chest", "Head"};

@@ -1,10 +1,12 @@
-// Playing a match in process with zero actions, and reading its events (the sports' match tests).
+// Playing a match in process with zero actions, and reading its events and observation blocks
+// (the sports' match tests).
 #pragma once
 
 #include <span>
 #include <string>
 #include <vector>
 
+#include "match_info.h"
 #include "sport.h"
 
 namespace olympics::sports {
@@ -30,6 +32,11 @@ inline const nlohmann::json* find_call(const nlohmann::json& events, const std::
   for (const auto& e : events)
     if (e["call"] == call) return &e;
   return nullptr;
+}
+
+// Where the observation block `name` starts (throws naming the blocks there are).
+inline int block_offset(const SportMatch& m, const std::string& name) {
+  return client::ObservationLayout::from_blocks(m.layout().observation).offset(name);
 }
 
 }  // namespace olympics::sports
