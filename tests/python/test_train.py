@@ -137,6 +137,10 @@ class TrainTest(unittest.TestCase):
         a, _, _ = trainer.model.act(obs)  # no exploration outside the mask either
         self.assertTrue(torch.equal(a[:, [0, 3]], torch.zeros(64, 2)))
         self.assertGreater(float(a[:, 1:3].std()), 0.0)
+        older = {k: v for k, v in trainer.model.state_dict().items() if k != "mask"}
+        unmasked = ActorCritic(ToyVectorEnv.OBS, ToyVectorEnv.ACT, [32])
+        unmasked.load_state_dict(older)  # a checkpoint from before --action-mask
+        self.assertTrue(torch.equal(unmasked.mask, torch.ones(ToyVectorEnv.ACT)))
         with self.assertRaises(SystemExit) as bad:
             train.action_mask("3:9", 4)
         self.assertIn("outside the action's 0:4", str(bad.exception))

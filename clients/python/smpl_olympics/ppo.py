@@ -84,6 +84,12 @@ class ActorCritic(nn.Module):
     def value(self, obs):
         return self.critic(obs).squeeze(-1)
 
+    def load_state_dict(self, state, strict=True, **kwargs):
+        # Checkpoints from before --action-mask have no "mask": they acted on every entry.
+        state = dict(state)
+        state.setdefault("mask", torch.ones_like(self.mask))
+        return super().load_state_dict(state, strict, **kwargs)
+
     def log_prob(self, d, actions):
         return (d.log_prob(actions) * self.mask).sum(-1)
 
