@@ -160,10 +160,8 @@ void BasketballMatch::after_physics_step(double step_start) {
       if (!config_.court.inside(now.head<2>())) out_this_tick_ = true;
     } else if (c.other->entity < 0) {  // the rim, its bracket, the board or the pole
       referee_.basket_touch();
-    } else {
-      for (int s = 0; s < slot_count(); ++s)
-        if (player(s).entity() == c.other->entity)
-          referee_.touch(s, player(s).body_state(0).position.head<2>(), time());
+    } else if (const int s = slot_of_entity(c.other->entity); s >= 0) {
+      referee_.touch(s, player(s).body_state(0).position.head<2>(), time());
     }
   }
 }

@@ -37,6 +37,12 @@ void SmplMatch::add_player(const core::ModelSpec& spec, const core::RootPlacemen
   falls_.emplace_back(spec, fall_exempt);
 }
 
+int SmplMatch::slot_of_entity(int entity) const {
+  for (int s = 0; s < slot_count(); ++s)
+    if (player(s).entity() == entity) return s;
+  return -1;
+}
+
 void SmplMatch::reset_player(int slot, const core::RootPlacement& placement) {
   scene_.humanoid(slot).reset(placement);
   falls_[slot].reset();

@@ -83,6 +83,9 @@ class SmplMatch : public SportMatch {
   // Back to the rest pose at `placement`, fall detection restarted.
   void reset_player(int slot, const core::RootPlacement& placement);
   core::HumanoidScene& scene() { return scene_; }
+  // The slot whose humanoid is the physics entity `entity` (a GeomTag's), or -1: the arena,
+  // equipment.
+  int slot_of_entity(int entity) const;
   core::Humanoid& player(int slot) { return scene_.humanoid(slot); }
   const core::Humanoid& player(int slot) const { return scene_.humanoid(slot); }
   const ModeSpec& mode() const { return mode_; }

@@ -214,14 +214,11 @@ void RacketMatch::probe_bodies(const Eigen::Vector3d& from, double t) {
   if (referee_.call()) return;
   auto touch = probe_.first_touch(scene().world(), from, flight_.position(),
                                   [this](int, int body) { return body == hand_body_; });
-  if (!touch) return;
-  for (int slot = 0; slot < slot_count(); ++slot) {
-    if (player(slot).entity() != touch->entity) continue;
-    referee_.body_touch(slot, t);
-    flight_.set_state(touch->centre, equipment::bounce(flight_.velocity(), Eigen::Vector3d::Zero(),
-                                                       touch->normal, 0.3, 0.5));
-    return;
-  }
+  const int slot = touch ? slot_of_entity(touch->entity) : -1;
+  if (slot < 0) return;
+  referee_.body_touch(slot, t);
+  flight_.set_state(touch->centre, equipment::bounce(flight_.velocity(), Eigen::Vector3d::Zero(),
+                                                     touch->normal, 0.3, 0.5));
 }
 
 void RacketMatch::settle_tick() {

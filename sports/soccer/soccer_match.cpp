@@ -148,13 +148,11 @@ void SoccerMatch::before_physics_step() {
 
 void SoccerMatch::after_physics_step(double) {
   for (const auto& c : scene().world().sensed_contacts()) {
-    if (!c.other || c.other->entity < 0) continue;
-    for (int s = 0; s < slot_count(); ++s) {
-      if (player(s).entity() != c.other->entity) continue;
-      touch_tick_[s] = tick() + 1;  // the tick being stepped
-      if (kind_ == SoccerMode::TeamPlay) referee_.touch(s, time());
-      last_toucher_ = s;
-    }
+    const int s = c.other ? slot_of_entity(c.other->entity) : -1;
+    if (s < 0) continue;
+    touch_tick_[s] = tick() + 1;  // the tick being stepped
+    if (kind_ == SoccerMode::TeamPlay) referee_.touch(s, time());
+    last_toucher_ = s;
   }
 }
 
