@@ -27,6 +27,7 @@ SmplMatch::SmplMatch(const ModeSpec& mode, Layout layout, const MatchSettings& s
   outcome_.scores.assign(mode_.team_count(), 0.0f);
   down_.assign(n, 0);
   clear_ticks_.assign(n, 0);
+  down_since_.assign(n, 0);
 }
 
 void SmplMatch::add_player(const core::ModelSpec& spec, const core::RootPlacement& placement,
@@ -48,6 +49,15 @@ void SmplMatch::reset_player(int slot, const core::RootPlacement& placement) {
   falls_[slot].reset();
   down_[slot] = 0;
   clear_ticks_[slot] = 0;
+}
+
+void SmplMatch::stand_up_fallen(double after_s, const std::function<double(int)>& yaw) {
+  for (int s = 0; s < slot_count(); ++s) {
+    if (!down(s) || time_ - down_since_[s] < after_s) continue;
+    const Eigen::Vector3d at = player(s).body_state(0).position;
+    reset_player(s, {{at.x(), at.y(), 0}, yaw(s)});
+    log(referee_event("stood_up", time_, s));
+  }
 }
 
 void SmplMatch::observe(int slot, std::span<float> out) const {
@@ -88,6 +98,7 @@ void SmplMatch::step(const std::vector<std::span<const float>>& actions) {
     }
     if (down_[i] && !was_down) {
       fell_.push_back(i);
+      down_since_[i] = time_;
       nlohmann::json e = referee_event("fall", time_, i);
       e["body"] = falls_[i].culprit();
       log(std::move(e));

@@ -14,6 +14,7 @@
 // limit (on_time_limit()) -> info["events"].
 #pragma once
 
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -96,6 +97,9 @@ class SmplMatch : public SportMatch {
   // and which slots went down this tick.
   bool down(int slot) const { return down_[slot] != 0; }
   const std::vector<int>& fell_this_tick() const { return fell_; }
+  // Stands every player that has been down `after_s` or longer up where it lies, facing
+  // `yaw(slot)`, and logs "stood_up" (a sport's `falls: stand_up` setting: a game goes on).
+  void stand_up_fallen(double after_s, const std::function<double(int)>& yaw);
   const core::FallDetector& fall_detector(int slot) const { return falls_[slot]; }
   // The reward terms of a slot for this tick, in layout order; its reward is their weighted sum.
   void set_reward(int slot, std::span<const float> terms);
@@ -119,7 +123,8 @@ class SmplMatch : public SportMatch {
   core::HumanoidScene scene_;
   std::vector<core::FallDetector> falls_;
   std::vector<std::uint8_t> down_;
-  std::vector<int> clear_ticks_;  // per slot, while down: ticks in a row the detector was clear
+  std::vector<int> clear_ticks_;    // per slot, while down: ticks in a row the detector was clear
+  std::vector<double> down_since_;  // per slot, while down: when it went down
   std::vector<int> fell_;
   EventLog events_;
   int time_limit_ticks_;

@@ -78,7 +78,6 @@ SoccerMatch::SoccerMatch(const SoccerConfig& config, const ModeSpec& mode, Layou
   ball_ = std::make_unique<equipment::Ball>(scene().world(), equipment::soccer_ball(), spawn_);
   ball_->sense_contacts();
   touch_tick_.assign(slot_count(), -1);
-  down_since_.assign(slot_count(), -1);
   root_before_.resize(slot_count());
   for (int s = 0; s < slot_count(); ++s) add_player(player_model(), {});
   if (kind_ == SoccerMode::TeamPlay) {
@@ -174,21 +173,6 @@ void SoccerMatch::remember_positions() {
   ball_before_ = ball_->position();
 }
 
-void SoccerMatch::stand_up_fallen() {
-  for (int s = 0; s < slot_count(); ++s) {
-    if (!down(s)) {
-      down_since_[s] = -1;
-      continue;
-    }
-    if (down_since_[s] < 0) down_since_[s] = time();
-    if (!config_.stand_up || time() - down_since_[s] < config_.stand_up_after_s) continue;
-    const Eigen::Vector3d at = player(s).body_state(0).position;
-    reset_player(s, {{at.x(), at.y(), 0}, attack(s) > 0 ? 0.0 : M_PI});
-    down_since_[s] = -1;
-    log(referee_event("stood_up", time(), s));
-  }
-}
-
 void SoccerMatch::settle_tick() {
   if (kind_ == SoccerMode::TeamPlay)
     settle_team_play();
@@ -220,7 +204,8 @@ void SoccerMatch::settle_penalty() {
 }
 
 void SoccerMatch::settle_team_play() {
-  stand_up_fallen();
+  if (config_.stand_up)
+    stand_up_fallen(config_.stand_up_after_s, [this](int s) { return attack(s) > 0 ? 0.0 : M_PI; });
   const auto stop = referee_.update(ball_->position(), time());
   const int scoring = stop && stop->goal ? stop->goal->team : -1;
   for (int s = 0; s < slot_count(); ++s) {

@@ -74,7 +74,6 @@ class SoccerMatch : public SmplMatch {
   void record_out(const std::string& line, int last_touch);
   void kick_off_positions(int kicking_team);
   void clear_restart_area(const Restart& r);
-  void stand_up_fallen();
   int attack(int slot) const;
   RewardState reward_state(int slot) const;
   void remember_positions();
@@ -91,7 +90,6 @@ class SoccerMatch : public SmplMatch {
   std::vector<Eigen::Vector3d> root_before_;
   Eigen::Vector3d ball_before_ = Eigen::Vector3d::Zero();
   std::vector<int> touch_tick_;                     // per slot: the last tick it touched the ball
-  std::vector<double> down_since_;                  // per slot: when it went down (stand_up)
   int last_toucher_ = -1;                           // penalty: the slot that touched the ball last
   nlohmann::json goals_ = nlohmann::json::array();  // every goal, for the result
 };
