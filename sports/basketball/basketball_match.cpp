@@ -19,6 +19,7 @@ const core::ModelSpec& player_model() {
 constexpr double kFloorTouch = 0.01;     // m: the ball's bottom this close to the floor
 constexpr double kTeammateAside = 3.0;   // m: the taker's teammate beside it at a restart
 constexpr double kDefendersApart = 1.2;  // m between two defenders at a restart
+constexpr double kReleased_s = 0.1;      // the ball untouched by the shooter this long: released
 
 }  // namespace
 
@@ -59,7 +60,8 @@ std::vector<RefereeCall> basketball_calls() {
       {"shot_clock", "the side with the ball did not get a shot to the basket in time (team)"},
       {"restart", "play restarts (kind: check_ball or after_basket; team, x, y)"},
       {"miss", "free throw: the ball came down on the floor or left the court without a basket"},
-      {"fall", "a player fell (body)"}};
+      {"fall", "a player fell (body)"},
+      {"stood_up", "team play with falls: stand_up: a player down 2 s was stood up where it lay"}};
 }
 
 BasketballMatch::BasketballMatch(const BasketballConfig& config, const ModeSpec& mode,
@@ -74,8 +76,8 @@ BasketballMatch::BasketballMatch(const BasketballConfig& config, const ModeSpec&
   ball_ = std::make_unique<equipment::Ball>(scene().world(), equipment::basketball(),
                                             Eigen::Vector3d(0, 0, 1));
   root_before_.resize(slot_count());
+  ball_->sense_contacts();
   if (team_play_) {
-    ball_->sense_contacts();
     const int first = std::uniform_int_distribution<int>(0, 1)(rng_);
     const Restart r = referee_.start(first, 0.0);
     log_stoppage({"start", std::nullopt, -1, r});
@@ -153,6 +155,8 @@ void BasketballMatch::after_physics_step(double step_start) {
   if (config_.court.basket(ball_before_step_, now)) basket_this_tick_ = true;
   if (!team_play_) {
     if (now.z() - ball_->spec().radius < kFloorTouch) touched_floor_ = true;
+    for (const auto& c : scene().world().sensed_contacts())
+      if (c.other && c.other->entity >= 0) shooter_touch_s_ = step_start;
     return;
   }
   for (const auto& c : scene().world().sensed_contacts()) {
@@ -167,10 +171,17 @@ void BasketballMatch::after_physics_step(double step_start) {
 }
 
 void BasketballMatch::settle_tick() {
-  if (team_play_)
+  if (team_play_) {
     settle_team_play();
-  else
+    if (config_.stand_up && !outcome_.match_over)
+      stand_up_fallen(config_.stand_up_after_s, [this](int s) {
+        const Eigen::Vector3d to_rim =
+            config_.court.rim_centre() - player(s).body_state(0).position;
+        return std::atan2(to_rim.y(), to_rim.x());
+      });
+  } else {
     settle_free_throw();
+  }
   ball_before_tick_ = ball_->position();
   for (int s = 0; s < slot_count(); ++s) root_before_[s] = player(s).body_state(0).position;
 }
@@ -193,7 +204,9 @@ void BasketballMatch::settle_free_throw() {
     log(std::move(e));
     return outcome_.end("missed", -1);
   }
-  if (!fell_this_tick().empty()) return outcome_.end("fall", -1);
+  // A fall ends the throw while the shooter still has the ball, not once it is in flight.
+  const bool released = !presenting() && time() - shooter_touch_s_ > kReleased_s;
+  if (!fell_this_tick().empty() && !released) return outcome_.end("fall", -1);
 }
 
 TeamPlayState BasketballMatch::reward_state(int slot) const {

@@ -3,7 +3,8 @@
 // Mode free_throw: one shooter behind the free-throw line, facing the basket; the ball is
 // presented between its hands (held still in front of the chest for `present_s`, so the hands
 // can close on it) and is then the players' to hold by friction alone: no weld, no attachment.
-// The throw ends with a basket, the ball on the floor or off the court, a fall, or the time limit.
+// The throw ends with a basket, the ball on the floor or off the court, a fall before the ball
+// is released, or the time limit.
 //
 // Team play (1v1, 2v2) on the half court: the BasketballReferee's rules (3x3: points by where
 // the shot was released, clearing, the shot clock, out of bounds, the game to points_to_win or
@@ -30,6 +31,8 @@ struct BasketballConfig {
   double present_s = 0.5;         // the ball is held still between the hands this long
   double restart_distance = 2.0;  // m: the defenders from the taker at a restart
   double game_s = 600;            // team play's default time limit
+  bool stand_up = true;           // team play: a player down this long is stood up where it lies
+  double stand_up_after_s = 2;
 };
 
 bool is_team_play(const std::string& mode);
@@ -93,6 +96,7 @@ class BasketballMatch : public SmplMatch {
   std::vector<Eigen::Vector3d> root_before_;
   bool basket_this_tick_ = false;
   bool touched_floor_ = false;  // free throw: after the presentation
+  double shooter_touch_s_ = 0;  // free throw: when the ball last touched the shooter
   bool out_this_tick_ = false;  // team play: the ball on the floor outside the lines
   nlohmann::json baskets_ = nlohmann::json::array();     // every counted basket, for the result
   nlohmann::json stoppages_ = nlohmann::json::object();  // reason -> count

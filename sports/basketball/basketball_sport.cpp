@@ -27,6 +27,10 @@ std::vector<SettingSpec> BasketballSport::settings() const {
       SettingSpec::number("shot_clock_s", 12, "team play: s to get a shot to the basket", 3, 60),
       SettingSpec::number("restart_distance", 2.0,
                           "team play: m the defenders stand from a restart's taker", 1, 6),
+      SettingSpec::choice("falls", "stand_up",
+                          "team play: a fallen player is stood up where it lies after 2 s, "
+                          "facing the basket (\"stand_up\"), or only reported (\"report\")",
+                          {"stand_up", "report"}),
   };
 }
 
@@ -40,6 +44,7 @@ BasketballConfig BasketballSport::config(const nlohmann::json& options) const {
   c.rules.shot_clock_s = s.at("shot_clock_s");
   c.restart_distance = s.at("restart_distance");
   c.game_s = s.at("game_s");
+  c.stand_up = s.at("falls") == "stand_up";
   return c;
 }
 

@@ -3,6 +3,8 @@
 // what the shooter's release spot says, out of bounds, the shot clock and the game's end.
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "basketball/basketball_match.h"
 #include "registry.h"
 #include "zero_play.h"
@@ -156,6 +158,39 @@ TEST(BasketballGame, TheGameEndsWhenASideReachesThePointsToWin) {
   EXPECT_EQ(m->outcome().winner_team, m->team_of(shooter));
   EXPECT_EQ(m->outcome().reason, "points_reached");
   EXPECT_EQ(m->outcome().info["baskets"].size(), 1u);
+}
+
+// Random actions for every slot for up to `ticks`; every tick's events.
+nlohmann::json play_random(SportMatch& m, int ticks) {
+  std::mt19937_64 rng(3);
+  std::normal_distribution<float> noise(0, 1);
+  std::vector<std::vector<float>> actions(m.slot_count(), std::vector<float>(m.action_size()));
+  nlohmann::json events = nlohmann::json::array();
+  for (int t = 0; t < ticks && !m.outcome().match_over; ++t) {
+    std::vector<std::span<const float>> spans;
+    for (auto& a : actions) {
+      for (float& x : a) x = noise(rng);
+      spans.emplace_back(a);
+    }
+    m.step(spans);
+    for (const auto& e : m.outcome().info["events"]) events.push_back(e);
+  }
+  return events;
+}
+
+TEST(BasketballGame, AFallenPlayerIsStoodUpAfterTwoSecondsUnlessFallsAreOnlyReported) {
+  auto m = game("1v1", 5);
+  const nlohmann::json events = play_random(*m, 8 * 30);
+  const nlohmann::json* fall = find_call(events, "fall");
+  const nlohmann::json* stood = find_call(events, "stood_up");
+  ASSERT_NE(fall, nullptr) << "random players fall";
+  ASSERT_NE(stood, nullptr);
+  EXPECT_GE(stood->at("t").get<double>() - fall->at("t").get<double>(), 2.0 - 1e-9);
+
+  auto reported = game("1v1", 5, {{"falls", "report"}});
+  const nlohmann::json same = play_random(*reported, 8 * 30);
+  EXPECT_NE(find_call(same, "fall"), nullptr);
+  EXPECT_EQ(find_call(same, "stood_up"), nullptr);
 }
 
 }  // namespace
