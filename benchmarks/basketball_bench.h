@@ -12,7 +12,7 @@ namespace olympics::bench {
 
 struct BasketballBenchOptions {
   int throws = 100;  // free throws per policy (seeds 1..N)
-  std::vector<std::string> policies = {"zero", "random"};
+  std::vector<std::string> policies = {"scripted", "zero", "random"};
   double seconds = 2;  // wall seconds per speed measurement
   int repeats = 3;
   bool speed = true;

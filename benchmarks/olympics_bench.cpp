@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
   bask->add_option("--throws", basketball.throws, "free throws per policy (seeds 1..N)")
       ->check(CLI::PositiveNumber);
   bask->add_option("--policies", basketball.policies,
-                   "free-throw shooters: zero, random, mlp:FILE (comma-separated)")
+                   "free-throw shooters: scripted, zero, random, mlp:FILE (comma-separated)")
       ->delimiter(',');
   bask->add_flag("--no-speed{false}", basketball.speed, "skip the ticks/s measurements");
   bask->add_option("--seconds", basketball.seconds, "wall seconds per speed measurement")

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "scripted_basketball.h"
 #include "scripted_boxing.h"
 #include "scripted_fencing.h"
 #include "scripted_racket.h"
@@ -10,7 +11,7 @@
 namespace olympics::client {
 
 std::vector<std::string> ScriptedPolicy::sports() {
-  return {"tennis", "table_tennis", "fencing", "boxing", "soccer"};
+  return {"tennis", "table_tennis", "fencing", "boxing", "soccer", "basketball"};
 }
 
 void ScriptedPolicy::start(const MatchInfo& match) {
@@ -22,6 +23,8 @@ void ScriptedPolicy::start(const MatchInfo& match) {
     sport_policy_ = std::make_unique<ScriptedBoxingPolicy>();
   else if (match.sport == "soccer")
     sport_policy_ = std::make_unique<ScriptedSoccerPolicy>();
+  else if (match.sport == "basketball")
+    sport_policy_ = std::make_unique<ScriptedBasketballPolicy>();
   else {
     std::string known;
     for (const auto& s : sports()) known += (known.empty() ? "" : ", ") + s;

@@ -1,0 +1,125 @@
+#include "scripted_basketball.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "smplx_observation.h"
+
+namespace olympics::client {
+namespace {
+
+using namespace smplx;
+
+constexpr double kReferenceDistance_m = 4.25;
+constexpr double kStill_mps = 0.15;  // the ball's speed under which it lies still
+constexpr double kStillFor_s = 0.2;
+
+// 0 to 1 over [0, 1] with zero velocity and acceleration at both ends (minimum jerk).
+double smooth(double s) {
+  s = std::clamp(s, 0.0, 1.0);
+  return s * s * s * (10 - 15 * s + 6 * s * s);
+}
+
+// One arm's pose: turned `out` from the aim's bearing (outward positive), `elevation` above the
+// horizontal, the forearm rolled by `roll` (palm up near pi), elbow and fingers bent up.
+struct ArmPose {
+  double out = M_PI / 2, elevation = 0, roll = 0, elbow = 0, wrist = 0, curl = 0;  // rest: T
+};
+
+ArmPose blend(const ArmPose& a, const ArmPose& b, double s) {
+  s = smooth(s);
+  auto mix = [s](double x, double y) { return x + s * (y - x); };
+  return {mix(a.out, b.out),     mix(a.elevation, b.elevation), mix(a.roll, b.roll),
+          mix(a.elbow, b.elbow), mix(a.wrist, b.wrist),         mix(a.curl, b.curl)};
+}
+
+// The shoulder's target Ry(b) Rz(c) (the joint's hinge order x, y, z) turns the arm forward and
+// pitches it; the roll is the elbow's, about the forearm (a shoulder rolled by pi would sit on
+// its hinge's +-180 degree limit). Pitching by Ry lowers the arm only once it points forward.
+void set_arm(std::span<float> a, bool right, double aim, const ArmPose& p) {
+  const double side = right ? 1 : -1;
+  const int shoulder = right ? kRShoulder : kLShoulder;
+  set_joint(a, shoulder, 1, -p.elevation);
+  set_joint(a, shoulder, 2, side * M_PI / 2 + aim - side * p.out);
+  const int elbow = right ? kRElbow : kLElbow;
+  set_joint(a, elbow, 0, -side * p.elbow);
+  set_joint(a, elbow, 1, -p.roll);
+  set_joint(a, right ? kRWrist : kLWrist, 0, side * p.wrist);
+  const int fingers = right ? kRFingers : kLFingers;
+  for (int f = 0; f < kThumbLinks; ++f) set_joint(a, fingers + f, 0, side * p.curl);
+}
+
+// Standing balance by the ankles and hips (the stepping controller's standing strategy, for the
+// SMPL-X observation and action): the root held over the middle of the ankles.
+void stand(std::span<const float> o, std::span<float> a, const FreeThrowShot& s) {
+  const Eigen::Vector3d mid = 0.5 * (body_position(o, kLAnkle) + body_position(o, kRAnkle));
+  const Eigen::Vector3d v = vec3(o, kLinVel);
+  const double dx = -mid.x(), dy = -mid.y();
+  for (int ankle : {kLAnkle, kRAnkle}) {
+    set_joint(a, ankle, 1, s.ankle_bias + s.ankle_p * dx + s.ankle_d * v.x());
+    set_joint(a, ankle, 0, -(s.ankle_p * dy + s.ankle_d * v.y()));
+  }
+  for (int hip : {kLHip, kRHip}) set_joint(a, hip, 1, s.hip_p * dx);
+}
+
+}  // namespace
+
+void ScriptedBasketballPolicy::start(const MatchInfo& match) {
+  if (match.sport != "basketball" || match.mode != "free_throw")
+    throw std::invalid_argument(
+        "the scripted basketball policy shoots free throws (basketball "
+        "free_throw), not " +
+        match.sport + " " + match.mode);
+  ball_ = match.observation.offset("ball");
+  rim_ = match.observation.offset("rim");
+  control_dt_ = match.control_dt;
+  clock_s_ = 0;
+  still_s_ = 0;
+  swing_start_s_ = -1;
+}
+
+void ScriptedBasketballPolicy::act(std::span<const float> o, std::span<float> a) {
+  if (a.size() != kActions || o.size() < static_cast<size_t>(kSelfObservation))
+    throw std::invalid_argument("the scripted basketball policy plays the SMPL-X humanoid");
+  std::fill(a.begin(), a.end(), 0.0f);
+  const Eigen::Vector3d rim = vec3(o, rim_);
+  const double bearing = std::atan2(rim.y(), rim.x()) + shot_.aim_offset;
+  const double distance = rim.head<2>().norm();
+  const ArmPose hold{shot_.hands_apart, shot_.hold_elevation, shot_.palm_roll,
+                     shot_.hold_elbow,  shot_.wrist_up,       shot_.finger_curl};
+  // The hands come forward low, under the presented ball, then rise to it.
+  ArmPose low = hold;
+  low.out = 0.35, low.elevation = hold.elevation - shot_.under, low.roll = 0.5 * hold.roll;
+  ArmPose under = hold;
+  under.elevation = hold.elevation - shot_.under;
+  ArmPose pose;
+  const double t = clock_s_;
+  if (t < 0.25) {
+    pose = blend(ArmPose{}, low, t / 0.25);
+  } else if (t < 0.45) {
+    pose = blend(low, under, (t - 0.25) / 0.2);
+  } else if (swing_start_s_ < 0) {
+    pose = blend(under, hold, (t - 0.45) / 0.2);
+    // The swing starts once the ball has lain still in the hands for a while (a ball still
+    // rolling in the cup leaves it early and low), or at `latest_shot_s` at the latest.
+    const double ball_speed = vec3(o, ball_ + 3).norm();
+    still_s_ = ball_speed < kStill_mps ? still_s_ + control_dt_ : 0;
+    if ((t >= shot_.shot_s && still_s_ >= kStillFor_s) || t >= shot_.latest_shot_s)
+      swing_start_s_ = t;
+  } else {
+    ArmPose release = hold;
+    release.elevation =
+        shot_.release_elevation + shot_.elevation_per_m * (distance - kReferenceDistance_m);
+    release.elbow = shot_.shot_elbow;
+    release.curl = shot_.shot_curl;
+    pose = blend(hold, release, shot_.swing_s > 0 ? (t - swing_start_s_) / shot_.swing_s : 1.0);
+  }
+  stand(o, a, shot_);
+  set_arm(a, false, bearing, pose);
+  set_arm(a, true, bearing, pose);
+  clock_s_ += control_dt_;
+}
+
+}  // namespace olympics::client

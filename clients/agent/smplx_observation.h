@@ -1,0 +1,56 @@
+// Reading the SMPL-X self observation (778 floats, 52 bodies, sports/core/self_observation.h)
+// and writing SMPL-X actions (153 PD targets): offsets, body indices and the action scales.
+#pragma once
+
+#include <Eigen/Core>
+#include <span>
+
+namespace olympics::client::smplx {
+
+constexpr int kBodies = 52;
+constexpr int kSelfObservation = 1 + 3 * (kBodies - 1) + 12 * kBodies;  // 778
+constexpr int kActions = 3 * (kBodies - 1);                             // 153
+constexpr int kBodyPos = 1;
+constexpr int kRotations = kBodyPos + 3 * (kBodies - 1);
+constexpr int kLinVel = kRotations + 6 * kBodies;
+
+// Body indices (HUMANOID-SMPLX.md section 1): the SMPL body's first 14, then each arm's thorax,
+// shoulder, elbow and wrist (the palm) and its 15 finger links (index, middle, pinky, ring, thumb;
+// 3 links each). Joint j moves body j (j >= 1).
+enum Body {
+  kLHip = 1,
+  kLKnee = 2,
+  kLAnkle = 3,
+  kRHip = 5,
+  kRKnee = 6,
+  kRAnkle = 7,
+  kLThorax = 14,
+  kLShoulder = 15,
+  kLElbow = 16,
+  kLWrist = 17,
+  kLFingers = 18,
+  kRThorax = 33,
+  kRShoulder = 34,
+  kRElbow = 35,
+  kRWrist = 36,
+  kRFingers = 37,
+};
+constexpr int kFingerLinks = 15;
+constexpr int kThumbLinks = 12;  // the thumb's three links are the last of the fifteen
+
+inline Eigen::Vector3d vec3(std::span<const float> o, int at) {
+  return {o[at], o[at + 1], o[at + 2]};
+}
+// Relative to the root, heading frame.
+inline Eigen::Vector3d body_position(std::span<const float> o, int body) {
+  return body == 0 ? Eigen::Vector3d::Zero() : vec3(o, kBodyPos + 3 * (body - 1));
+}
+Eigen::Matrix3d body_rotation(std::span<const float> o, int body);
+
+// Sets joint `body`'s hinge `axis` (0 x, 1 y, 2 z) to `radians`, through the action scale the
+// server applies (sports/core/action_map.h: min(1.2 x the range's bound, pi), knee flexion 5).
+void set_joint(std::span<float> action, int body, int axis, double radians);
+// Sets the three hinges of joint `body` to the rotation `q` (from its parent's frame).
+void set_ball_joint(std::span<float> action, int body, const Eigen::Matrix3d& r);
+
+}  // namespace olympics::client::smplx
