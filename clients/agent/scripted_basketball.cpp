@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 #include "smplx_observation.h"
@@ -11,10 +10,6 @@ namespace olympics::client {
 namespace {
 
 using namespace smplx;
-
-constexpr double kReferenceDistance_m = 4.25;
-constexpr double kStill_mps = 0.15;  // the ball's speed under which it lies still
-constexpr double kStillFor_s = 0.2;
 
 // 0 to 1 over [0, 1] with zero velocity and acceleration at both ends (minimum jerk).
 double smooth(double s) {
@@ -72,12 +67,9 @@ void ScriptedBasketballPolicy::start(const MatchInfo& match) {
         "the scripted basketball policy shoots free throws (basketball "
         "free_throw), not " +
         match.sport + " " + match.mode);
-  ball_ = match.observation.offset("ball");
   rim_ = match.observation.offset("rim");
   control_dt_ = match.control_dt;
   clock_s_ = 0;
-  still_s_ = 0;
-  swing_start_s_ = -1;
 }
 
 void ScriptedBasketballPolicy::act(std::span<const float> o, std::span<float> a) {
@@ -86,7 +78,6 @@ void ScriptedBasketballPolicy::act(std::span<const float> o, std::span<float> a)
   std::fill(a.begin(), a.end(), 0.0f);
   const Eigen::Vector3d rim = vec3(o, rim_);
   const double bearing = std::atan2(rim.y(), rim.x()) + shot_.aim_offset;
-  const double distance = rim.head<2>().norm();
   const ArmPose hold{shot_.hands_apart, shot_.hold_elevation, shot_.palm_roll,
                      shot_.hold_elbow,  shot_.wrist_up,       shot_.finger_curl};
   // The hands come forward low, under the presented ball, then rise to it.
@@ -100,21 +91,13 @@ void ScriptedBasketballPolicy::act(std::span<const float> o, std::span<float> a)
     pose = blend(ArmPose{}, low, t / 0.25);
   } else if (t < 0.45) {
     pose = blend(low, under, (t - 0.25) / 0.2);
-  } else if (swing_start_s_ < 0) {
+  } else if (t < shot_.shot_s) {
     pose = blend(under, hold, (t - 0.45) / 0.2);
-    // The swing starts once the ball has lain still in the hands for a while (a ball still
-    // rolling in the cup leaves it early and low), or at `latest_shot_s` at the latest.
-    const double ball_speed = vec3(o, ball_ + 3).norm();
-    still_s_ = ball_speed < kStill_mps ? still_s_ + control_dt_ : 0;
-    if ((t >= shot_.shot_s && still_s_ >= kStillFor_s) || t >= shot_.latest_shot_s)
-      swing_start_s_ = t;
   } else {
-    ArmPose release = hold;
-    release.elevation =
-        shot_.release_elevation + shot_.elevation_per_m * (distance - kReferenceDistance_m);
-    release.elbow = shot_.shot_elbow;
-    release.curl = shot_.shot_curl;
-    pose = blend(hold, release, shot_.swing_s > 0 ? (t - swing_start_s_) / shot_.swing_s : 1.0);
+    pose = hold;
+    pose.elevation = shot_.release_elevation;
+    pose.elbow = shot_.shot_elbow;
+    pose.curl = shot_.shot_curl;
   }
   stand(o, a, shot_);
   set_arm(a, false, bearing, pose);
