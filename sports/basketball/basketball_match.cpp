@@ -92,8 +92,8 @@ BasketballMatch::BasketballMatch(const BasketballConfig& config, const ModeSpec&
   for (int s = 0; s < slot_count(); ++s) root_before_[s] = player(s).body_state(0).position;
 }
 
-Eigen::Vector3d BasketballMatch::target() const {
-  return config_.court.rim_centre() + Eigen::Vector3d(0, 0, kTargetAboveRim);
+Eigen::Vector3d BasketballMatch::target(int basket) const {
+  return config_.court.rim_centre(basket) + Eigen::Vector3d(0, 0, kTargetAboveRim);
 }
 
 core::RootPlacement BasketballMatch::placement(const Eigen::Vector2d& at,
@@ -110,9 +110,9 @@ void BasketballMatch::present_to(int slot, const core::RootPlacement& at) {
   ball_->set_state(present_, Eigen::Vector3d::Zero());
 }
 
-// The taker (the taking side's player nearest the spot) on the spot, facing the basket for a
-// check ball and away from it (towards the arc it must clear) under the basket; its teammate
-// beside it; the defenders `restart_distance` in front of it, facing it.
+// The taker (the taking side's player nearest the spot) on the spot, facing as the referee says
+// (the basket at a check ball, the arc it must clear under the basket); its teammate beside it,
+// facing the basket they attack; the defenders `restart_distance` in front of it, facing it.
 void BasketballMatch::carry_out(const Restart& r) {
   int taker = -1;
   double nearest = 1e9;
@@ -121,9 +121,9 @@ void BasketballMatch::carry_out(const Restart& r) {
     const double d = (player(s).body_state(0).position.head<2>() - r.spot).norm();
     if (d < nearest) nearest = d, taker = s;
   }
-  const Eigen::Vector2d to_rim = -r.spot.normalized();
-  const Eigen::Vector2d facing =
-      r.kind == RestartKind::CheckBall ? to_rim : Eigen::Vector2d(-to_rim);
+  const Eigen::Vector2d to_rim =
+      (config_.court.rim_centre(referee_.attacks(r.team)).head<2>() - r.spot).normalized();
+  const Eigen::Vector2d facing = r.facing;
   const Eigen::Vector2d across(-facing.y(), facing.x());
   const core::RootPlacement taken = placement(r.spot, facing);
   reset_player(taker, taken);
@@ -152,7 +152,8 @@ void BasketballMatch::after_physics_step(double step_start) {
     return;
   }
   const Eigen::Vector3d now = ball_->position();
-  if (config_.court.basket(ball_before_step_, now)) basket_this_tick_ = true;
+  if (const int b = config_.court.basket_through(ball_before_step_, now); b >= 0)
+    basket_this_tick_ = b;
   if (!team_play_) {
     if (now.z() - ball_->spec().radius < kFloorTouch) touched_floor_ = true;
     for (const auto& c : scene().world().sensed_contacts())
@@ -176,7 +177,7 @@ void BasketballMatch::settle_tick() {
     if (config_.stand_up && !outcome_.match_over)
       stand_up_fallen(config_.stand_up_after_s, [this](int s) {
         const Eigen::Vector3d to_rim =
-            config_.court.rim_centre() - player(s).body_state(0).position;
+            config_.court.rim_centre(attacked_by(s)) - player(s).body_state(0).position;
         return std::atan2(to_rim.y(), to_rim.x());
       });
   } else {
@@ -187,8 +188,8 @@ void BasketballMatch::settle_tick() {
 }
 
 void BasketballMatch::settle_free_throw() {
-  const bool basket = basket_this_tick_;
-  basket_this_tick_ = false;
+  const bool basket = basket_this_tick_ >= 0;
+  basket_this_tick_ = -1;
   set_reward(0, free_throw_terms(ball_->position(), ball_->velocity(), target(), basket));
   if (basket) {
     outcome_.scores[0] = 1;
@@ -216,8 +217,8 @@ TeamPlayState BasketballMatch::reward_state(int slot) const {
   s.ball_before = ball_before_tick_;
   s.ball = ball_->position();
   s.ball_velocity = ball_->velocity();
-  s.target = target();
   const int mine = team_of(slot), with_ball = referee_.possession();
+  s.target = target(referee_.attacks(with_ball < 0 ? mine : with_ball));
   s.possession = with_ball < 0 ? 0 : (with_ball == mine ? 1 : -1);
   s.fallen = down(slot);
   return s;
@@ -227,8 +228,10 @@ void BasketballMatch::settle_team_play() {
   const std::array<int, 2> before = referee_.score();
   std::vector<TeamPlayState> states;  // possession as it was during the tick
   for (int s = 0; s < slot_count(); ++s) states.push_back(reward_state(s));
-  const auto stop = referee_.update(basket_this_tick_, out_this_tick_, time());
-  basket_this_tick_ = out_this_tick_ = false;
+  const auto stop =
+      referee_.update(basket_this_tick_ >= 0, out_this_tick_, time(), basket_this_tick_);
+  basket_this_tick_ = -1;
+  out_this_tick_ = false;
   const std::array<int, 2>& score = referee_.score();
   const std::array<int, 2> scored = {score[0] - before[0], score[1] - before[1]};
   for (int s = 0; s < slot_count(); ++s) {
@@ -298,7 +301,8 @@ void BasketballMatch::on_time_limit() {
 void BasketballMatch::write_task_observation(int slot, const HeadingFrame& frame,
                                              ObservationWriter& out) const {
   write_ball_observation(*ball_, frame, out);
-  out.begin("rim").put(frame.point(config_.court.rim_centre()));
+  const int attacked = team_play_ ? attacked_by(slot) : 0;
+  out.begin("rim").put(frame.point(config_.court.rim_centre(attacked)));
   if (!team_play_) {
     out.begin("target").put(frame.vector(target() - ball_->position()));
     out.begin("throw")
@@ -308,8 +312,8 @@ void BasketballMatch::write_task_observation(int slot, const HeadingFrame& frame
   }
   const Court& court = config_.court;
   out.begin("arc")
-      .put(court.beyond_arc(frame.root.position.head<2>()))
-      .put(court.beyond_arc(ball_->position().head<2>()));
+      .put(court.beyond_arc(frame.root.position.head<2>(), attacked))
+      .put(court.beyond_arc(ball_->position().head<2>(), attacked));
   write_team_blocks(*this, slot, frame, out);
   const int mine = team_of(slot), with_ball = referee_.possession();
   out.begin("game")

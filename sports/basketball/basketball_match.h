@@ -27,7 +27,7 @@ namespace olympics::sports::basketball {
 
 struct BasketballConfig {
   Court court;
-  ThreeByThreeRules rules;
+  TeamPlayRules rules;
   double present_s = 0.5;         // the ball is held still between the hands this long
   double restart_distance = 2.0;  // m: the defenders from the taker at a restart
   double game_s = 600;            // team play's default time limit
@@ -52,8 +52,10 @@ class BasketballMatch : public SmplMatch {
   // Where the ball is (or was last) presented: in front of a player's chest, between its hands.
   Eigen::Vector3d present_spot() const { return present_; }
   bool presenting() const { return time() < present_until_; }
-  // The target of eq. 12's desired velocity, above the rim.
-  Eigen::Vector3d target() const;
+  // The target of eq. 12's desired velocity, above the rim of `basket`.
+  Eigen::Vector3d target(int basket = 0) const;
+  // The basket a slot's side attacks (0 on the half court).
+  int attacked_by(int slot) const { return referee_.attacks(team_of(slot)); }
 
   // In front of the chest, between the hands of the hold pose (measured, docs/basketball.md).
   static constexpr double kPresentForward = 0.54, kPresentHeight = 1.2;
@@ -94,7 +96,7 @@ class BasketballMatch : public SmplMatch {
   Eigen::Vector3d ball_before_step_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d ball_before_tick_ = Eigen::Vector3d::Zero();
   std::vector<Eigen::Vector3d> root_before_;
-  bool basket_this_tick_ = false;
+  int basket_this_tick_ = -1;   // which basket the ball went down through this tick, if any
   bool touched_floor_ = false;  // free throw: after the presentation
   double shooter_touch_s_ = 0;  // free throw: when the ball last touched the shooter
   bool out_this_tick_ = false;  // team play: the ball on the floor outside the lines

@@ -16,11 +16,15 @@ const char* restart_name(RestartKind kind) {
       return "check_ball";
     case RestartKind::AfterBasket:
       return "after_basket";
+    case RestartKind::Centre:
+      return "centre";
+    case RestartKind::ThrowIn:
+      return "throw_in";
   }
   return "?";
 }
 
-BasketballReferee::BasketballReferee(const Court& court, const ThreeByThreeRules& rules,
+BasketballReferee::BasketballReferee(const Court& court, const TeamPlayRules& rules,
                                      std::vector<int> slot_teams)
     : court_(court), rules_(rules), slot_teams_(std::move(slot_teams)) {}
 
@@ -28,20 +32,37 @@ Eigen::Vector2d BasketballReferee::check_ball_spot() const {
   return {-(court_.arc_radius + kCheckBallBehindArc), 0};
 }
 
-Eigen::Vector2d BasketballReferee::under_basket_spot() const { return {-kUnderBasket, 0}; }
+Eigen::Vector2d BasketballReferee::under_basket_spot(int basket) const {
+  return court_.from_basket({-kUnderBasket, 0}, basket);
+}
 
 Restart BasketballReferee::start(int team, double t) {
-  return stop("start", RestartKind::CheckBall, team, t).restart;
+  return stop("start", court_.full ? RestartKind::Centre : RestartKind::CheckBall, team, t).restart;
 }
 
 Stoppage BasketballReferee::stop(std::string reason, RestartKind kind, int team, double t) {
   Stoppage s;
   s.reason = std::move(reason);
   s.last_touch = last_touch_;
-  s.restart = {kind, team,
-               kind == RestartKind::CheckBall ? check_ball_spot() : under_basket_spot()};
+  Restart& r = s.restart;
+  r.kind = kind, r.team = team;
+  const Eigen::Vector2d rim = court_.rim_centre(attacks(team)).head<2>();
+  switch (kind) {
+    case RestartKind::CheckBall:  // at the arc, facing the basket
+      r.spot = check_ball_spot(), r.facing = (rim - r.spot).normalized();
+      break;
+    case RestartKind::AfterBasket:  // under it, facing the arc to clear
+      r.spot = under_basket_spot(), r.facing = (r.spot - rim).normalized();
+      break;
+    case RestartKind::Centre:
+      r.spot = {court_.centre_x(), 0}, r.facing = (rim - r.spot).normalized();
+      break;
+    case RestartKind::ThrowIn:  // under the basket it defends, facing the one it attacks
+      r.spot = under_basket_spot(1 - attacks(team)), r.facing = (rim - r.spot).normalized();
+      break;
+  }
   possession_ = team;
-  cleared_ = kind == RestartKind::CheckBall;
+  cleared_ = kind != RestartKind::AfterBasket;
   clock_running_ = true;
   clock_since_ = t;
   last_touch_ = -1;  // a basket needs a new touch: the restart itself shoots nothing
@@ -52,14 +73,14 @@ void BasketballReferee::touch(int slot, const Eigen::Vector2d& root, double t) {
   const int side = team(slot);
   if (side != possession_) {  // a steal or a defensive rebound
     possession_ = side;
-    cleared_ = false;
+    cleared_ = court_.full;  // only the half court asks to clear
     clock_running_ = false;
   }
   if (!clock_running_) {  // after a change of possession, or a shot that hit the basket
     clock_running_ = true;
     clock_since_ = t;
   }
-  if (!cleared_ && court_.behind_arc(root)) cleared_ = true;
+  if (!cleared_ && court_.behind_arc(root, attacks(side))) cleared_ = true;
   last_touch_ = slot;
   last_touch_root_ = root;
 }
@@ -77,7 +98,23 @@ int BasketballReferee::winner() const {
   return -1;
 }
 
-std::optional<Stoppage> BasketballReferee::update(bool basket, bool out, double t) {
+std::optional<Stoppage> BasketballReferee::full_court_basket(int basket_index, double t) {
+  BasketCall call;
+  call.team = basket_index;  // the side attacking it
+  call.shooter = last_touch_;
+  call.release = last_touch_root_;
+  call.counted = true;
+  call.points = last_touch_ >= 0 && court_.behind_arc(last_touch_root_, basket_index) ? 3 : 2;
+  score_[call.team] += call.points;
+  Stoppage s = stop("basket", RestartKind::ThrowIn, other(call.team), t);
+  s.basket = call;
+  return s;
+}
+
+std::optional<Stoppage> BasketballReferee::update(bool basket, bool out, double t,
+                                                  int basket_index) {
+  const RestartKind restart = court_.full ? RestartKind::ThrowIn : RestartKind::CheckBall;
+  if (basket && court_.full) return full_court_basket(basket_index, t);
   if (basket) {
     BasketCall call;
     call.shooter = last_touch_;
@@ -94,16 +131,16 @@ std::optional<Stoppage> BasketballReferee::update(bool basket, bool out, double 
       return s;
     }
     const int taking = call.team >= 0 ? other(call.team) : other(possession_);
-    Stoppage s = stop("not_cleared", RestartKind::CheckBall, taking, t);
+    Stoppage s = stop("not_cleared", restart, taking, t);
     s.basket = call;
     return s;
   }
   if (out) {
     const int touched = last_touch_ >= 0 ? team(last_touch_) : possession_;
-    return stop("out", RestartKind::CheckBall, other(touched), t);
+    return stop("out", restart, other(touched), t);
   }
   if (clock_running_ && t - clock_since_ >= rules_.shot_clock_s)
-    return stop("shot_clock", RestartKind::CheckBall, other(possession_), t);
+    return stop("shot_clock", restart, other(possession_), t);
   return std::nullopt;
 }
 

@@ -1,4 +1,4 @@
-// The rules of half-court team play (1v1, 2v2; FIBA 3x3 style), without physics: the referee
+// The rules of team play (1v1, 2v2), without physics: the referee
 // is told who touched the ball (and where that player stood), when the ball hit the basket
 // (rim, bracket or board), whether it went in, whether it touched the floor outside the lines,
 // and says when play stops and how it restarts.
@@ -18,7 +18,14 @@
 //   touch it last).
 // - Check ball: at the top of the arc, already cleared. The game ends when a side reaches
 //   `points_to_win`; the match's time limit is the game's clock.
-// Not enforced (docs/basketball.md): travelling, double dribble, fouls, a player out of bounds.
+//
+// On the full court (Court::full) the rules are the full game's instead: side 0 attacks basket 0
+// and side 1 basket 1; a basket counts for the side attacking it, 3 points where the shooter
+// stood behind that basket's arc at the release, 2 inside; nothing needs clearing; play starts
+// at the centre, and every restart (after a basket, out of bounds, the shot clock) is the
+// other side's throw-in under the basket it defends. The shot clock works as above.
+// Not enforced (docs/basketball.md): travelling, double dribble, fouls, a player out of bounds,
+// backcourt.
 #pragma once
 
 #include <Eigen/Core>
@@ -31,18 +38,19 @@
 
 namespace olympics::sports::basketball {
 
-struct ThreeByThreeRules {
+struct TeamPlayRules {
   double shot_clock_s = 12;
   int points_to_win = 21;
 };
 
-enum class RestartKind { CheckBall, AfterBasket };
+enum class RestartKind { CheckBall, AfterBasket, Centre, ThrowIn };
 const char* restart_name(RestartKind kind);
 
 struct Restart {
   RestartKind kind = RestartKind::CheckBall;
   int team = 0;                                    // the side that takes it
   Eigen::Vector2d spot = Eigen::Vector2d::Zero();  // where its taker stands
+  Eigen::Vector2d facing{1, 0};                    // which way it faces (unit, floor)
 };
 
 struct BasketCall {
@@ -63,8 +71,7 @@ struct Stoppage {
 
 class BasketballReferee {
  public:
-  BasketballReferee(const Court& court, const ThreeByThreeRules& rules,
-                    std::vector<int> slot_teams);
+  BasketballReferee(const Court& court, const TeamPlayRules& rules, std::vector<int> slot_teams);
 
   // The first check ball, by `team`.
   Restart start(int team, double t);
@@ -73,9 +80,11 @@ class BasketballReferee {
   void touch(int slot, const Eigen::Vector2d& root, double t);
   // The ball hit the rim, its bracket or the board: a shot attempt, the shot clock stops.
   void basket_touch();
-  // After each tick: did the ball go down through the rim, did it touch the floor outside the
-  // lines. A stoppage, if play stopped.
-  std::optional<Stoppage> update(bool basket, bool out, double t);
+  // After each tick: did the ball go down through a rim (which: `basket_index`), did it touch
+  // the floor outside the lines. A stoppage, if play stopped.
+  std::optional<Stoppage> update(bool basket, bool out, double t, int basket_index = 0);
+  // The basket `team` attacks (0 on the half court).
+  int attacks(int team) const { return court_.full ? team : 0; }
 
   int possession() const { return possession_; }  // the side with the ball (-1: none yet)
   bool cleared() const { return cleared_; }
@@ -85,17 +94,18 @@ class BasketballReferee {
   // The side that reached points_to_win, else -1.
   int winner() const;
   int last_touch() const { return last_touch_; }
-  // Where the restarts are taken.
+  // Where the restarts are taken: at the arc, and under `basket`.
   Eigen::Vector2d check_ball_spot() const;
-  Eigen::Vector2d under_basket_spot() const;
+  Eigen::Vector2d under_basket_spot(int basket = 0) const;
 
  private:
   Stoppage stop(std::string reason, RestartKind kind, int team, double t);
+  std::optional<Stoppage> full_court_basket(int basket_index, double t);
   int team(int slot) const { return slot_teams_[slot]; }
   int other(int team) const { return 1 - team; }
 
   Court court_;
-  ThreeByThreeRules rules_;
+  TeamPlayRules rules_;
   std::vector<int> slot_teams_;
   std::array<int, 2> score_{};
   int possession_ = -1;

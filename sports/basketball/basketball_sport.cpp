@@ -20,6 +20,11 @@ std::vector<SettingSpec> BasketballSport::settings() const {
                           "s the ball is held still between the shooter's (or a restart's "
                           "taker's) hands",
                           0, 3),
+      SettingSpec::choice("court", "half",
+                          "team play: the half court of 3x3 (one basket; 1 and 2 points, the "
+                          "ball cleared behind the arc) or the full 28 m court (a basket at "
+                          "each end; 2 and 3 points, throw-ins)",
+                          {"half", "full"}),
       SettingSpec::number("points_to_win", 21, "team play: the game ends when a side has these", 1,
                           100),
       SettingSpec::number("game_s", 600,
@@ -39,6 +44,7 @@ BasketballConfig BasketballSport::config(const nlohmann::json& options) const {
   BasketballConfig c;
   c.court.rim_height = s.at("rim_height");
   c.court.free_throw_distance = s.at("free_throw_distance");
+  c.court.full = s.at("court") == "full";
   c.present_s = s.at("present_s");
   c.rules.points_to_win = s.at("points_to_win");
   c.rules.shot_clock_s = s.at("shot_clock_s");

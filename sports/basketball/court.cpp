@@ -13,22 +13,51 @@ constexpr double kLaneHalfWidth = 2.45;  // FIBA's restricted area: 4.9 m wide
 
 }  // namespace
 
-double Court::beyond_arc(const Eigen::Vector2d& p) const {
-  return std::max(p.norm() - arc_radius, std::abs(p.y()) - corner_line);
+Eigen::Vector2d Court::from_basket(const Eigen::Vector2d& p, int basket) const {
+  return basket == 0 ? p : Eigen::Vector2d(2 * centre_x() - p.x(), -p.y());
+}
+
+Eigen::Vector3d Court::rim_centre(int basket) const {
+  const Eigen::Vector2d at = from_basket(Eigen::Vector2d::Zero(), basket);
+  return {at.x(), at.y(), rim_height};
+}
+
+double Court::beyond_arc(const Eigen::Vector2d& p, int basket) const {
+  const Eigen::Vector2d q = from_basket(p, basket);
+  return std::max(q.norm() - arc_radius, std::abs(q.y()) - corner_line);
 }
 
 bool Court::inside(const Eigen::Vector2d& p) const {
   return p.x() <= baseline_x() && p.x() >= far_line_x() && std::abs(p.y()) <= width / 2;
 }
 
-bool Court::basket(const Eigen::Vector3d& before, const Eigen::Vector3d& after) const {
-  if (!(before.z() >= rim_height && after.z() < rim_height)) return false;
+int Court::basket_through(const Eigen::Vector3d& before, const Eigen::Vector3d& after) const {
+  if (!(before.z() >= rim_height && after.z() < rim_height)) return -1;
   const double f = (before.z() - rim_height) / (before.z() - after.z());
   const Eigen::Vector2d at = before.head<2>() + f * (after - before).head<2>();
-  return at.norm() < rim_radius;
+  for (int b = 0; b < baskets(); ++b)
+    if ((at - rim_centre(b).head<2>()).norm() < rim_radius) return b;
+  return -1;
 }
 
 std::vector<Court::Part> Court::parts() const {
+  std::vector<Part> out = one_basket();
+  if (!full) return out;
+  const size_t n = out.size();
+  for (size_t i = 0; i < n; ++i) {  // the second basket: the first turned half round
+    Part p = out[i];
+    auto turn = [this](const Eigen::Vector3d& v) {
+      const Eigen::Vector2d at = from_basket(v.head<2>(), 1);
+      return Eigen::Vector3d(at.x(), at.y(), v.z());
+    };
+    p.a = turn(p.a);
+    if (p.kind != Part::Board) p.b = turn(p.b);  // a board's b is its half extents
+    out.push_back(p);
+  }
+  return out;
+}
+
+std::vector<Court::Part> Court::one_basket() const {
   std::vector<Part> out;
   const double ring = rim_radius + kRimRod;  // the rod's centre line
   for (int i = 0; i < kRimSegments; ++i) {
@@ -63,19 +92,28 @@ void Court::build(core::PhysicsWorld& world) const {
 
 void Court::describe(SceneBuilder& scene) const {
   const double x0 = far_line_x(), x1 = baseline_x(), W = width / 2;
-  scene.set_ground(depth + 1, W + 3, "#c9955c");
+  scene.set_ground(length() + 1, W + 3, "#c9955c");
   scene.add_ground_rect(x0, x1, -W, W, "line");
   constexpr int kArcs = 48;
   const double start = std::asin(corner_line / arc_radius);  // where the arc meets the corners
   const double corner_x = arc_radius * std::cos(start);
-  for (double side : {-1.0, 1.0})
-    scene.add_line({x1, side * corner_line, 0.002}, {-corner_x, side * corner_line, 0.002}, "line");
-  for (int i = 0; i < kArcs; ++i) {
-    const double a0 = -start + 2 * start * i / kArcs, a1 = -start + 2 * start * (i + 1) / kArcs;
-    scene.add_line({-arc_radius * std::cos(a0), arc_radius * std::sin(a0), 0.002},
-                   {-arc_radius * std::cos(a1), arc_radius * std::sin(a1), 0.002}, "line");
+  for (int b = 0; b < baskets(); ++b) {
+    auto line = [&](const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+      const Eigen::Vector2d p = from_basket(from, b), q = from_basket(to, b);
+      scene.add_line({p.x(), p.y(), 0.002}, {q.x(), q.y(), 0.002}, "line");
+    };
+    for (double side : {-1.0, 1.0}) line({x1, side * corner_line}, {-corner_x, side * corner_line});
+    for (int i = 0; i < kArcs; ++i) {
+      const double a0 = -start + 2 * start * i / kArcs, a1 = -start + 2 * start * (i + 1) / kArcs;
+      line({-arc_radius * std::cos(a0), arc_radius * std::sin(a0)},
+           {-arc_radius * std::cos(a1), arc_radius * std::sin(a1)});
+    }
+    const Eigen::Vector2d lane0 = from_basket({free_throw_line_x(), -kLaneHalfWidth}, b),
+                          lane1 = from_basket({x1, kLaneHalfWidth}, b);
+    scene.add_ground_rect(std::min(lane0.x(), lane1.x()), std::max(lane0.x(), lane1.x()),
+                          -kLaneHalfWidth, kLaneHalfWidth, "line");
   }
-  scene.add_ground_rect(free_throw_line_x(), x1, -kLaneHalfWidth, kLaneHalfWidth, "line");
+  if (full) scene.add_line({centre_x(), -W, 0.002}, {centre_x(), W, 0.002}, "line");
   for (const Part& p : parts()) {
     if (p.kind == Part::Board)
       scene.add_box(-1, p.a, p.b, "arena", "#e8eef2");

@@ -193,5 +193,37 @@ TEST(BasketballGame, AFallenPlayerIsStoodUpAfterTwoSecondsUnlessFallsAreOnlyRepo
   EXPECT_EQ(find_call(same, "stood_up"), nullptr);
 }
 
+TEST(BasketballGame, OnTheFullCourtPlayStartsAtTheCentreAndEachSideScoresOnItsOwnBasket) {
+  auto m = game("1v1", 7, {{"court", "full"}, {"present_s", 0.1}});
+  BasketballMatch& b = basketball(m);
+  const Court& court = b.court();
+  EXPECT_NEAR(b.present_spot().x(), court.centre_x(), BasketballMatch::kPresentForward + 0.2);
+  // Each slot's "rim" is the basket its side attacks (distances do not depend on the frame).
+  std::vector<float> obs(m->obs_size());
+  const int rim = block_offset(*m, "rim");
+  for (int s = 0; s < 2; ++s) {
+    m->observe(s, obs);
+    const double seen = Vector3d(obs[rim], obs[rim + 1], obs[rim + 2]).norm();
+    EXPECT_NEAR(seen, (court.rim_centre(b.attacked_by(s)) - root(b, s)).norm(), 1e-4);
+    EXPECT_EQ(b.attacked_by(s), m->team_of(s));
+  }
+  // The side attacking the far basket scores there: 3, released from mid-court.
+  const int far_side = 1, shooter = m->team_of(0) == far_side ? 0 : 1;
+  play_zero(*m, 4);
+  touch_with(b, shooter);
+  ASSERT_TRUE(court.behind_arc(root(b, shooter).head<2>(), 1));
+  b.ball().set_state(court.rim_centre(1) + Vector3d(0, 0, 0.5), {0, 0, -1});
+  const auto events = play_until(*m, "basket", 30);
+  const auto* basket = find_call(events, "basket");
+  ASSERT_NE(basket, nullptr);
+  EXPECT_EQ((*basket)["team"], far_side);
+  EXPECT_EQ((*basket)["points"], 3);
+  EXPECT_EQ(m->outcome().scores[far_side], 3.0f);
+  const auto* restart = find_call(events, "restart");
+  ASSERT_NE(restart, nullptr);
+  EXPECT_EQ((*restart)["kind"], "throw_in");
+  EXPECT_EQ((*restart)["team"], 1 - far_side);
+}
+
 }  // namespace
 }  // namespace olympics::sports::basketball

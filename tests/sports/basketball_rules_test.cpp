@@ -1,5 +1,6 @@
-// The half-court 3x3 rules without physics: points by where the shot was released, clearing
+// The rules without physics. Half court (3x3): points by where the shot was released, clearing
 // behind the arc, possession after a basket, the shot clock, out of bounds, the game's end.
+// Full court: each side's own basket, 2 and 3 points, throw-ins, no clearing.
 #include <gtest/gtest.h>
 
 #include "basketball/basketball_referee.h"
@@ -12,7 +13,7 @@ const Eigen::Vector2d kBehind(-7.5, 1);  // beyond the 6.75 m arc
 const Eigen::Vector2d kCorner(-1, 7.0);  // beyond the corner line
 
 // 1v1: slot 0 is side 0, slot 1 side 1; side 0 has the check ball at t = 0.
-BasketballReferee one_on_one(ThreeByThreeRules rules = {}) {
+BasketballReferee one_on_one(TeamPlayRules rules = {}) {
   BasketballReferee r(Court{}, rules, {0, 1});
   const Restart first = r.start(0, 0.0);
   EXPECT_EQ(first.kind, RestartKind::CheckBall);
@@ -144,6 +145,49 @@ TEST(BasketballRules, TheGameEndsWhenASideReachesThePointsToWin) {
   ASSERT_TRUE(r.update(true, false, 5.0));
   EXPECT_EQ(r.score()[0], 4);
   EXPECT_EQ(r.winner(), 0);
+}
+
+TEST(BasketballRules, OnTheFullCourtEachSideScoresOnItsOwnBasketWithTwoAndThreePoints) {
+  Court full;
+  full.full = true;
+  BasketballReferee r(full, {}, {0, 1});
+  const Restart first = r.start(1, 0.0);
+  EXPECT_EQ(first.kind, RestartKind::Centre);
+  EXPECT_NEAR(first.spot.x(), full.centre_x(), 1e-12);
+  EXPECT_LT(first.facing.x(), -0.99) << "side 1 faces basket 1, at the far (-x) end";
+  EXPECT_EQ(r.attacks(0), 0);
+  EXPECT_EQ(r.attacks(1), 1);
+
+  const Eigen::Vector2d far_rim = full.rim_centre(1).head<2>();
+  r.touch(1, far_rim + Eigen::Vector2d(7.5, 0), 1.0);  // behind basket 1's arc
+  auto s = r.update(true, false, 2.0, 1);
+  ASSERT_TRUE(s && s->basket);
+  EXPECT_EQ(s->basket->team, 1);
+  EXPECT_EQ(s->basket->points, 3);
+  EXPECT_EQ(r.score()[1], 3);
+  // Side 0 throws in under basket 1, the one it defends, facing basket 0 (+x).
+  EXPECT_EQ(s->restart.kind, RestartKind::ThrowIn);
+  EXPECT_EQ(s->restart.team, 0);
+  EXPECT_LT((s->restart.spot - far_rim).norm(), 1.5);
+  EXPECT_GT(s->restart.facing.x(), 0.99);
+  EXPECT_TRUE(r.cleared()) << "nothing to clear on the full court";
+
+  // Side 1 steals it (no clearing needed) and scores inside the arc: 2.
+  r.touch(0, s->restart.spot, 2.5);
+  r.touch(1, far_rim + Eigen::Vector2d(2, 0), 3.0);
+  EXPECT_TRUE(r.cleared());
+  s = r.update(true, false, 3.5, 1);
+  ASSERT_TRUE(s && s->basket);
+  EXPECT_EQ(s->basket->points, 2);
+  EXPECT_EQ((std::array<int, 2>{0, 5}), r.score());
+
+  // Out of bounds and the shot clock give the other side a throw-in under the basket it defends.
+  r.touch(0, {0, 0}, 4.0);
+  s = r.update(false, true, 4.5);
+  ASSERT_TRUE(s);
+  EXPECT_EQ(s->restart.kind, RestartKind::ThrowIn);
+  EXPECT_EQ(s->restart.team, 1);
+  EXPECT_LT(s->restart.spot.norm(), 1.5) << "side 1 defends basket 0";
 }
 
 }  // namespace

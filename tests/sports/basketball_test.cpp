@@ -21,8 +21,9 @@ struct Drop {
   Court court;
   core::HumanoidScene scene;
   equipment::Ball ball;
-  Drop(const Vector3d& at, const Vector3d& velocity)
+  Drop(const Vector3d& at, const Vector3d& velocity, bool full_court = false)
       : ball(scene.world(), equipment::basketball(), at, velocity) {
+    court.full = full_court;
     court.build(scene.world());
   }
   // Steps `seconds`; the first step at which the ball went down through the rim, or -1.
@@ -63,6 +64,28 @@ TEST(BasketballCourt, ABallOnTheFrontOfTheRimBouncesOffItAndIsNoBasket) {
   EXPECT_EQ(d.run(1.2, &max_x_speed), -1);
   EXPECT_GT(max_x_speed, 0.5) << "the rim deflected it";
   EXPECT_LT(d.ball.position().x(), -ring) << "it went off the front, not in";
+}
+
+TEST(BasketballCourt, TheFullCourtHasASecondBasketTurnedHalfRoundAtTheFarEnd) {
+  Court c;
+  c.full = true;
+  const Vector3d far = c.rim_centre(1);
+  EXPECT_NEAR(far.x(), -(28 - 2 * Court::kRimToBaseline), 1e-12);  // -24.85
+  EXPECT_EQ(far.y(), 0);
+  EXPECT_EQ(c.basket_through(far + Vector3d(0, 0, 0.05), far - Vector3d(0, 0, 0.05)), 1);
+  EXPECT_EQ(c.basket_through({0, 0, 3.1}, {0, 0, 3.0}), 0);
+  EXPECT_EQ(Court{}.basket_through(far + Vector3d(0, 0, 0.05), far - Vector3d(0, 0, 0.05)), -1);
+  // Its arc and free-throw line mirror basket 0's.
+  EXPECT_TRUE(c.behind_arc({far.x() + 6.9, 0}, 1));
+  EXPECT_FALSE(c.behind_arc({far.x() + 4.6, 0}, 1));
+  EXPECT_TRUE(c.behind_arc({-4.6, 0}, 1)) << "basket 0's free-throw line is far from basket 1";
+  EXPECT_TRUE(c.inside({-26.0, 0}));
+  EXPECT_FALSE(c.inside({-26.5, 0}));
+  EXPECT_EQ(c.parts().size(), 2 * Court{}.parts().size());
+  // Real geometry: a ball dropped through the far ring falls through it.
+  Drop d(far + Vector3d(0, 0, 0.75), Vector3d::Zero(), true);
+  EXPECT_GE(d.run(1.0), 0);
+  EXPECT_LT(d.ball.position().z(), 2.0);
 }
 
 TEST(BasketballCourt, BehindTheArcAndOnTheCourt) {
