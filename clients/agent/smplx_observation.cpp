@@ -1,6 +1,5 @@
 #include "smplx_observation.h"
 
-#include <Eigen/Geometry>
 #include <cmath>
 
 namespace olympics::client::smplx {
@@ -34,21 +33,8 @@ double scale(int body, int axis) {
 
 }  // namespace
 
-Eigen::Matrix3d body_rotation(std::span<const float> o, int body) {
-  const Eigen::Vector3d x = vec3(o, kRotations + 6 * body).normalized();
-  const Eigen::Vector3d z = vec3(o, kRotations + 6 * body + 3).normalized();
-  Eigen::Matrix3d r;
-  r << x, z.cross(x), z;
-  return r;
-}
-
 void set_joint(std::span<float> action, int body, int axis, double radians) {
   action[3 * (body - 1) + axis] = static_cast<float>(radians / scale(body, axis));
-}
-
-void set_ball_joint(std::span<float> action, int body, const Eigen::Matrix3d& r) {
-  const Eigen::Vector3d xyz = r.eulerAngles(0, 1, 2);
-  for (int axis = 0; axis < 3; ++axis) set_joint(action, body, axis, xyz[axis]);
 }
 
 }  // namespace olympics::client::smplx

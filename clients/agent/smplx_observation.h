@@ -45,12 +45,9 @@ inline Eigen::Vector3d vec3(std::span<const float> o, int at) {
 inline Eigen::Vector3d body_position(std::span<const float> o, int body) {
   return body == 0 ? Eigen::Vector3d::Zero() : vec3(o, kBodyPos + 3 * (body - 1));
 }
-Eigen::Matrix3d body_rotation(std::span<const float> o, int body);
 
 // Sets joint `body`'s hinge `axis` (0 x, 1 y, 2 z) to `radians`, through the action scale the
 // server applies (sports/core/action_map.h: min(1.2 x the range's bound, pi), knee flexion 5).
 void set_joint(std::span<float> action, int body, int axis, double radians);
-// Sets the three hinges of joint `body` to the rotation `q` (from its parent's frame).
-void set_ball_joint(std::span<float> action, int body, const Eigen::Matrix3d& r);
 
 }  // namespace olympics::client::smplx
