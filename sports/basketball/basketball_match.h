@@ -6,9 +6,10 @@
 // The throw ends with a basket, the ball on the floor or off the court, a fall before the ball
 // is released, or the time limit.
 //
-// Team play (1v1, 2v2) on the half court: the BasketballReferee's rules (3x3: points by where
-// the shot was released, clearing, the shot clock, out of bounds, the game to points_to_win or
-// the time limit); this class carries out its restarts: the taking side's player on the spot
+// Team play (1v1, 2v2) on the half court (3x3) or the full court (`court: full`): the
+// BasketballReferee's rules (points by where the shot was released, clearing on the half court,
+// the shot clock, out of bounds, the game to points_to_win or the time limit); this class
+// carries out its restarts: the taking side's player on the spot
 // with the ball presented between its hands as at a free throw, a teammate beside it, the
 // defenders `restart_distance` away between it and the basket. Who touched the ball, and whether
 // it hit the basket or the floor, come from its sensed contacts at the physics rate.

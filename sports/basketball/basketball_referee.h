@@ -1,7 +1,7 @@
-// The rules of team play (1v1, 2v2), without physics: the referee
-// is told who touched the ball (and where that player stood), when the ball hit the basket
-// (rim, bracket or board), whether it went in, whether it touched the floor outside the lines,
-// and says when play stops and how it restarts.
+// The rules of team play (1v1, 2v2), without physics: the referee is told who touched the ball
+// (and where that player stood), when the ball hit the basket (rim, bracket or board), whether
+// it went in, whether it touched the floor outside the lines, and says when play stops and how
+// it restarts. On the half court (the default) the rules are FIBA 3x3's:
 //
 // - Possession: the side of the last player to touch the ball. A touch by the other side (a
 //   steal, a defensive rebound) changes it, and the new side must clear the ball: a touch by

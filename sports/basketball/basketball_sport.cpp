@@ -7,8 +7,13 @@ BasketballSport::BasketballSport()
              {{"free_throw",
                {0},
                "one shooter behind the free-throw line, the ball presented between its hands"},
-              {"1v1", {0, 1}, "a half-court game between two players (3x3 rules)"},
-              {"2v2", {0, 0, 1, 1}, "a half-court game between two teams of two (3x3 rules)"}}) {}
+              {"1v1",
+               {0, 1},
+               "a game between two players (3x3 rules on the half court, or the full court's)"},
+              {"2v2",
+               {0, 0, 1, 1},
+               "a game between two teams of two (3x3 rules on the half court, or the full "
+               "court's)"}}) {}
 
 std::vector<SettingSpec> BasketballSport::settings() const {
   return {
