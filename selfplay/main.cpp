@@ -146,6 +146,10 @@ int main(int argc, char** argv) {
   sp->add_option("--bot-share", selfplay.bot_share, "share of games against a bot");
   sp->add_option("--bots", bots, "bots: zero, random[:seed], scripted[:seed]")->delimiter(',');
   sp->add_option("--matches", selfplay.matches, "games to play")->check(CLI::PositiveNumber);
+  sp->add_option("--learner", selfplay.learner,
+                 "a live learner plays the learning side (the trainer's client: python3 -m "
+                 "smpl_olympics.train --league NAME); its snapshots and the bots are its "
+                 "opponents");
   for (auto* cmd : {sp}) {
     cmd->add_option("--sport", spec.sport, "sport");
     cmd->add_option("--mode", spec.mode, "two-team mode: 1v1, 2v2, ...");
@@ -217,6 +221,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "resuming %s\n", name.c_str());
         spec = *existing;
       } else {
+        if (*sp && !selfplay.learner.empty()) bots.insert(bots.begin(), "live:" + selfplay.learner);
         spec.entrants = *sp ? (bots.empty() ? std::vector<Entrant>{} : parse_entrants(bots, 1))
                             : parse_entrants(entrants, 2);
         store.create_tournament(spec);

@@ -20,8 +20,13 @@ std::pair<std::string, std::string> split_strategy(const std::string& s) {
 }  // namespace
 
 nlohmann::json SelfplayOptions::to_json() const {
-  return {{"snapshots_dir", snapshots_dir}, {"window", window},   {"strategy", strategy},
-          {"bot_share", bot_share},         {"matches", matches}, {"lag", lag}};
+  return {{"snapshots_dir", snapshots_dir},
+          {"window", window},
+          {"strategy", strategy},
+          {"bot_share", bot_share},
+          {"matches", matches},
+          {"lag", lag},
+          {"learner", learner}};
 }
 
 SelfplayOptions SelfplayOptions::from_json(const std::string& text) {
@@ -29,6 +34,7 @@ SelfplayOptions SelfplayOptions::from_json(const std::string& text) {
   SelfplayOptions o;
   o.snapshots_dir = j.at("snapshots_dir"), o.window = j.at("window"), o.strategy = j.at("strategy");
   o.bot_share = j.at("bot_share"), o.matches = j.at("matches"), o.lag = j.at("lag");
+  o.learner = j.value("learner", "");  // runs stored before live learners had none
   return o;
 }
 
@@ -45,23 +51,23 @@ int choose_opponent(const SelfplayOptions& o, const Roster& r, const PayoffMatri
   if (!r.bots.empty() && uniform(rng) < o.bot_share)
     return r.bots[static_cast<size_t>(uniform(rng) * static_cast<double>(r.bots.size()))];
   auto [name, arg] = split_strategy(o.strategy);
-  if (name == "latest") return r.latest;
+  if (name == "latest") return r.mirror;
   if (name == "alternating") {
     const int block = std::max(1, arg.empty() ? 250 : std::stoi(arg));
     const int first = game - game % block;
     if (first < game && first < static_cast<int>(games.size()))  // the block's frozen opponent
       return games[first].home == r.latest ? games[first].away : games[first].home;
-    return r.latest;  // a new block: freeze the current latest
+    return r.mirror;  // a new block: freeze the current latest
   }
   if (name == "mlagents") {
     const double ratio = arg.empty() ? 0.5 : std::stod(arg);
-    if (r.window.empty() || uniform(rng) < ratio) return r.latest;
+    if (r.window.empty() || uniform(rng) < ratio) return r.mirror;
     return r.window[static_cast<size_t>(uniform(rng) * static_cast<double>(r.window.size()))];
   }
   if (name == "pfsp") {
     std::vector<int> candidates = r.window;
     candidates.insert(candidates.end(), r.bots.begin(), r.bots.end());
-    if (candidates.empty()) return r.latest;
+    if (candidates.empty()) return r.mirror;
     return pfsp_sample(payoff, r.latest, candidates, parse_weighting(arg.empty() ? "hard" : arg),
                        rng);
   }
@@ -108,21 +114,29 @@ Scheduler::Verdict SelfplayScheduler::schedule(TournamentSpec& spec, const std::
       payoff.record(g.home, g.away, g.home_score);
 
   Roster roster;
+  int live = -1;
   std::vector<std::pair<int, int>> snapshots;  // version, entrant
   for (int i = 0; i < static_cast<int>(spec.entrants.size()); ++i) {
     const auto& e = spec.entrants[i];
     if (e.policy.rfind("mlp:", 0) == 0)
       snapshots.emplace_back(snapshot_version(e.policy), i);
+    else if (e.policy.rfind("live:", 0) == 0)
+      live = i;
     else
       roster.bots.push_back(i);
   }
-  if (snapshots.empty()) return Verdict::Wait;  // the learner has published nothing yet
   std::sort(snapshots.rbegin(), snapshots.rend());
-  roster.latest = snapshots[0].second;
-  for (size_t k = 1;
+  // The latest snapshot plays and the older ones are its window; a live learner plays and every
+  // snapshot (its newest first) is its window.
+  const size_t first_opponent = live >= 0 ? 0 : 1;
+  if (live < 0 && snapshots.empty()) return Verdict::Wait;  // nothing published yet
+  roster.latest = live >= 0 ? live : snapshots[0].second;
+  roster.mirror = live >= 0 ? (snapshots.empty() ? -1 : snapshots[0].second) : roster.latest;
+  for (size_t k = first_opponent;
        k < snapshots.size() && static_cast<int>(roster.window.size()) < options_.window; ++k)
     roster.window.push_back(snapshots[k].second);
   const int opponent = choose_opponent(options_, roster, payoff, game, spec.seed, games);
+  if (opponent < 0) return Verdict::Wait;  // a live learner with no snapshot to meet yet
   // The learner plays either side, alternately.
   if (game % 2 == 0)
     out.push_back({game, roster.latest, opponent});

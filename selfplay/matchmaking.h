@@ -1,8 +1,11 @@
-// Self-play matchmaking: the learner's latest snapshot against opponents chosen by a strategy,
-// one game at a time (so swaps happen only between matches).
+// Self-play matchmaking: the learner against opponents chosen by a strategy, one game at a time
+// (so swaps happen only between matches). The learner is its latest snapshot, or (`learner`)
+// a live learner: the trainer's own client plays its games (entrant live:NAME) while the
+// snapshots it publishes and the bots are its opponents.
 //
 // Strategies (the anchors of the league issue):
-//   latest          latest vs latest (shared-policy self-play)
+//   latest          latest vs latest (shared-policy self-play; a live learner meets its newest
+//                   snapshot)
 //   alternating:E   a frozen copy: the opponent is the snapshot that was latest at the start of
 //                   each block of E games (the original's two policies taking turns to learn)
 //   mlagents:R      ML-Agents: with probability R the latest, else uniform from the window
@@ -31,18 +34,22 @@ struct SelfplayOptions {
   std::string strategy = "pfsp:hard";
   double bot_share = 0;
   int matches = 20;
-  int lag = 2;  // the runner's games in flight
+  int lag = 2;          // the runner's games in flight
+  std::string learner;  // a live learner's name: it plays the learning side ("" : the latest)
   nlohmann::json to_json() const;
   static SelfplayOptions from_json(const std::string& text);
 };
 
 struct Roster {
-  int latest = -1;          // entrant index of the newest snapshot
-  std::vector<int> window;  // older snapshots, newest first, at most `window`
+  int latest = -1;          // entrant index of the learner: the newest snapshot, or the live one
+  std::vector<int> window;  // snapshots it may meet, newest first, at most `window`
   std::vector<int> bots;
+  int mirror = -1;  // who "itself" is as an opponent: latest, or a live one's newest
+                    // snapshot (-1: none yet)
 };
 
-// The opponent of roster.latest in game `game`. `games` are the games before it (for alternating).
+// The opponent of roster.latest in game `game` (-1: nobody to play yet). `games` are the games
+// before it (for alternating).
 int choose_opponent(const SelfplayOptions& options, const Roster& roster,
                     const PayoffMatrix& payoff, int game, std::uint64_t seed,
                     const std::vector<Game>& games);

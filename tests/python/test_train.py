@@ -293,6 +293,45 @@ class TrainTest(unittest.TestCase):
             server.wait(timeout=30)
 
 
+    def test_a_league_run_learns_from_games_against_opponents_the_league_picks(self):
+        # olympics-league selfplay with a live learner: the trainer's client plays the learning
+        # side of every game, the league picks each opponent by PFSP from the bot and the
+        # snapshots the trainer publishes as it goes.
+        run, db = os.path.join(self.dir, "league-run"), os.path.join(self.dir, "league.db")
+        server = subprocess.Popen([f"{BIN}/olympics-server", "serve", "--lcm-url", URL, "--id",
+                                   "leaguetrain", "--results", os.path.join(self.dir, "l.db")],
+                                  stdout=subprocess.DEVNULL, stderr=subprocess.STDOUT)
+        league = subprocess.Popen(
+            [f"{BIN}/olympics-league", "selfplay", "--db", db, "--name", "lt", "--learner",
+             "lt", "--snapshots", os.path.join(run, "snapshots"), "--strategy", "pfsp:even",
+             "--bots", "zero", "--sport", "sandbox", "--mode", "1v1", "--time-limit", "1",
+             "--matches", "1000", "--parallel", "2", "--lcm-url", URL, "--log-dir", self.dir,
+             "--quiet"], stdout=subprocess.DEVNULL, stderr=subprocess.STDOUT)
+        try:
+            out = subprocess.run(
+                ["/usr/bin/python3", "-m", "smpl_olympics.train", "--run", run, "--sport",
+                 "sandbox", "--mode", "1v1", "--league", "lt", "--lcm-url", URL, "--samples",
+                 "320", "--num-envs", "2", "--horizon", "16", "--hidden", "32",
+                 "--snapshot-every", "1", "--quiet"],
+                env=dict(os.environ, OLYMPICS_BIN_DIR=BIN), capture_output=True, text=True,
+                timeout=600)
+            self.assertEqual(out.returncode, 0, out.stdout + out.stderr)
+            rows = read_metrics(run)
+            self.assertEqual(len(rows), 10)
+            self.assertGreater(sum(int(r["episodes"]) for r in rows), 3, "games ended and counted")
+            table = subprocess.run([f"{BIN}/olympics-league", "table", "--db", db, "--name", "lt",
+                                    "--json"], capture_output=True, text=True, timeout=60)
+            played = {e["entrant"]: e["wins"] + e["draws"] + e["losses"]
+                      for e in json.loads(table.stdout)}
+            self.assertGreater(played["lt"], 3, played)
+            self.assertGreater(sum(n for name, n in played.items() if name.startswith("mlp-")), 0,
+                               f"the league also picked the run's own snapshots: {played}")
+        finally:
+            for p in (league, server):
+                p.kill()
+                p.wait()
+
+
 URL = f"udpm://239.255.76.67:{25000 + os.getpid() % 9000}?ttl=0&recv_buf_size=4194304"
 
 if __name__ == "__main__":

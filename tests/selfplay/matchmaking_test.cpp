@@ -8,8 +8,8 @@
 namespace olympics::selfplay {
 namespace {
 
-// Entrants: 0, 1 bots; 2, 3, 4 snapshots v1..v3 (4 is the latest).
-Roster roster() { return {4, {3, 2}, {0, 1}}; }
+// Entrants: 0, 1 bots; 2, 3, 4 snapshots v1..v3 (4 is the latest, and itself as an opponent).
+Roster roster() { return {4, {3, 2}, {0, 1}, 4}; }
 
 std::map<int, int> tally(const SelfplayOptions& o, const PayoffMatrix& payoff, int n) {
   std::map<int, int> counts;
@@ -74,6 +74,25 @@ TEST(Matchmaking, AlternatingFreezesTheOpponentPerBlock) {
   EXPECT_EQ(choose_opponent(o, roster(), PayoffMatrix(5), 1, 1, games), 2);
   EXPECT_EQ(choose_opponent(o, roster(), PayoffMatrix(5), 2, 1, games), 2);
   EXPECT_EQ(choose_opponent(o, roster(), PayoffMatrix(5), 3, 1, games), 4);  // a new block
+}
+
+TEST(Matchmaking, ALiveLearnerMeetsItsSnapshotsAndTheBotsNeverItself) {
+  // Entrants: 0, 1 bots; 2, 3, 4 snapshots v1..v3; 5 the live learner.
+  const Roster live{5, {4, 3, 2}, {0, 1}, 4};
+  SelfplayOptions o;
+  o.strategy = "latest";
+  EXPECT_EQ(choose_opponent(o, live, PayoffMatrix(6), 0, 1, {}), 4) << "its newest snapshot";
+  o.strategy = "pfsp:hard";
+  PayoffMatrix payoff(6);
+  for (int k = 0; k < 20; ++k) payoff.record(5, 1, 1.0);  // it beats bot 1 every time
+  std::map<int, int> counts;
+  for (int game = 0; game < 400; ++game) ++counts[choose_opponent(o, live, payoff, game, 3, {})];
+  EXPECT_EQ(counts.count(5), 0u) << "never itself";
+  EXPECT_LT(counts[1], counts[0]) << "PFSP hard: less of the bot it always beats";
+  EXPECT_GT(counts[4] + counts[3] + counts[2], 0);
+  o.strategy = "latest";
+  EXPECT_EQ(choose_opponent(o, Roster{5, {}, {}, -1}, PayoffMatrix(6), 0, 1, {}), -1)
+      << "nothing published yet: wait";
 }
 
 TEST(Matchmaking, UnknownStrategyAndVersions) {

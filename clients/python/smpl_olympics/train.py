@@ -83,6 +83,11 @@ def parse_args(argv=None):
     p.add_argument("--critic-warmup", type=int, default=0,
                    help="iterations that fit only the value function before the policy moves")
     p.add_argument("--swap-every", type=int, default=10, help="--opponent frozen: refresh period")
+    p.add_argument("--league", default="",
+                   help="learn from the matches a league assigns to its live learner NAME "
+                        "(olympics-league selfplay --learner NAME --snapshots RUN/snapshots): the "
+                        "league picks the opponents (PFSP, ...) from the snapshots this run "
+                        "publishes and its bots; one team's slots learn")
     p.add_argument("--init", help="warm start from a run folder (blocks matched by name)")
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--lcm-url", default="", help="the server's LCM URL (default LCM's)")
@@ -94,6 +99,10 @@ def parse_args(argv=None):
     p.add_argument("--torch-threads", type=int, default=1,
                    help="PyTorch's threads (1: the server's workers keep the other cores)")
     args = p.parse_args(argv)
+    if args.league and (args.opponent or args.win_reward or args.spawn_server):
+        p.error("--league: the league chooses the opponents and rates the outcomes, and it needs "
+                "the server it uses; drop --opponent, --win-reward and --spawn-server (run "
+                "olympics-server and olympics-league selfplay --learner NAME beside it)")
     for key, value in PRESETS[args.preset].items():
         if getattr(args, key) is None:
             setattr(args, key, value)
@@ -168,7 +177,8 @@ class Trainer:
         os.makedirs(os.path.join(self.run_dir, "snapshots"), exist_ok=True)
         spec = spec or catalog.mode(args.sport, args.mode)
         self.spec = spec
-        self.teams = spec["slot_teams"]
+        # With --league the env holds one team's slots (the league says which, match by match).
+        self.teams = [0] * spec["slot_teams"].count(0) if args.league else spec["slot_teams"]
         self.shared = not args.opponent
         self.learning = [s for s in range(len(self.teams)) if self.shared or self.teams[s] == 0]
         self.others = [s for s in range(len(self.teams)) if s not in self.learning]
@@ -241,6 +251,10 @@ class Trainer:
     # ---------------------------------------------------------------- the loop
     def make_env(self):
         a = self.args
+        if a.league:  # each environment plays the next match the league assigns
+            return OlympicsVectorEnv(a.num_envs, sport=a.sport, mode=a.mode, learner=a.league,
+                                     lcm_url=a.lcm_url, secret_file=a.secret, timeout_s=600,
+                                     agent_name=a.league, policy_id="ppo")
         # Training seeds start at 10^6 (olympics-bench evaluates on seeds 1..N); a resumed run
         # moves on to seeds it has not played.
         seed = 10**6 * (1 + a.seed) + self.iteration * a.num_envs * 7919
@@ -387,7 +401,7 @@ class Trainer:
         """The sport's own figure from the matches that ended: the learning team's score (ball
         return: balls returned in; a match: points), and its win rate against an opponent."""
         results, self.results = self.results, []
-        if not results:
+        if not results or self.args.league:  # the learner's side varies: the league rates it
             return {}
         if self.shared:
             return {"score": float(np.mean([np.mean(r["scores"]) for r in results]))}
