@@ -89,8 +89,10 @@ std::string differences(const TournamentSpec& stored, const TournamentSpec& aske
                     : "");
     note("--entrants", given, stored_entrants);
   } else {
-    note("--strategy", nlohmann::json::parse(asked.options).value("strategy", ""),
-         nlohmann::json::parse(stored.options).value("strategy", ""));
+    const auto asked_options = nlohmann::json::parse(asked.options);
+    const auto stored_options = nlohmann::json::parse(stored.options);
+    note("--strategy", asked_options.value("strategy", ""), stored_options.value("strategy", ""));
+    note("--learner", asked_options.value("learner", ""), stored_options.value("learner", ""));
   }
   return out;
 }
