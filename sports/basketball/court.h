@@ -61,9 +61,6 @@ struct Court {
   // through a rim's plane inside the rim (centre within the inner radius where it crossed)?
   // Which basket (0, 1), else -1.
   int basket_through(const Eigen::Vector3d& before, const Eigen::Vector3d& after) const;
-  bool basket(const Eigen::Vector3d& before, const Eigen::Vector3d& after) const {
-    return basket_through(before, after) >= 0;
-  }
 
   struct Part {
     enum Kind { Rim, Board, Pole } kind;

@@ -34,7 +34,7 @@ struct Drop {
       const Vector3d before = ball.position();
       ball.prepare_step(scene.settings().physics_dt());
       scene.physics_step();
-      if (basket < 0 && court.basket(before, ball.position())) basket = i;
+      if (basket < 0 && court.basket_through(before, ball.position()) >= 0) basket = i;
       if (max_x_speed) *max_x_speed = std::max(*max_x_speed, std::abs(ball.velocity().x()));
     }
     return basket;
@@ -52,8 +52,8 @@ TEST(BasketballCourt, ABallThroughTheRimFromBelowIsNoBasketOnTheWayUp) {
   Drop d({0, 0, 2.6}, {0, 0, 7.0});
   const int basket = d.run(0.6);
   EXPECT_EQ(basket, -1);
-  EXPECT_FALSE(d.court.basket({0, 0, 3.0}, {0, 0, 3.1}));
-  EXPECT_TRUE(d.court.basket({0, 0, 3.1}, {0, 0, 3.0}));
+  EXPECT_EQ(d.court.basket_through({0, 0, 3.0}, {0, 0, 3.1}), -1);
+  EXPECT_EQ(d.court.basket_through({0, 0, 3.1}, {0, 0, 3.0}), 0);
 }
 
 TEST(BasketballCourt, ABallOnTheFrontOfTheRimBouncesOffItAndIsNoBasket) {
