@@ -175,7 +175,7 @@ void BasketballMatch::settle_tick() {
   if (team_play_) {
     settle_team_play();
     if (config_.stand_up && !outcome_.match_over)
-      stand_up_fallen(config_.stand_up_after_s, [this](int s) {
+      stand_up_fallen([this](int s) {
         const Eigen::Vector3d to_rim =
             config_.court.rim_centre(attacked_by(s)) - player(s).body_state(0).position;
         return std::atan2(to_rim.y(), to_rim.x());

@@ -32,8 +32,7 @@ struct BasketballConfig {
   double present_s = 0.5;         // the ball is held still between the hands this long
   double restart_distance = 2.0;  // m: the defenders from the taker at a restart
   double game_s = 600;            // team play's default time limit
-  bool stand_up = true;           // team play: a player down this long is stood up where it lies
-  double stand_up_after_s = 2;
+  bool stand_up = true;           // team play: a player down 2 s is stood up where it lies
 };
 
 bool is_team_play(const std::string& mode);

@@ -6,7 +6,8 @@
 // - Possession: the side of the last player to touch the ball. A touch by the other side (a
 //   steal, a defensive rebound) changes it, and the new side must clear the ball: a touch by
 //   one of its players standing (root) behind the arc. After an offensive rebound it need not.
-// - A basket (Court::basket_through) counts for the shooter's side (the last to touch it) when that side
+// - A basket (Court::basket_through) counts for the shooter's side (the last to touch it) when that
+// side
 //   had cleared: 2 points if the shooter stood behind the arc when it last touched the ball (the
 //   release), 1 inside. The other side then takes the ball under the basket and must clear it.
 //   A basket by a side that had not cleared does not count (a "not_cleared" violation): the

@@ -37,10 +37,7 @@ std::vector<SettingSpec> BasketballSport::settings() const {
       SettingSpec::number("shot_clock_s", 12, "team play: s to get a shot to the basket", 3, 60),
       SettingSpec::number("restart_distance", 2.0,
                           "team play: m the defenders stand from a restart's taker", 1, 6),
-      SettingSpec::choice("falls", "stand_up",
-                          "team play: a fallen player is stood up where it lies after 2 s, "
-                          "facing the basket (\"stand_up\"), or only reported (\"report\")",
-                          {"stand_up", "report"}),
+      SmplMatch::falls_setting("stand_up"),
   };
 }
 

@@ -51,9 +51,17 @@ void SmplMatch::reset_player(int slot, const core::RootPlacement& placement) {
   clear_ticks_[slot] = 0;
 }
 
-void SmplMatch::stand_up_fallen(double after_s, const std::function<double(int)>& yaw) {
+SettingSpec SmplMatch::falls_setting(const std::string& default_choice) {
+  return SettingSpec::choice("falls", default_choice,
+                             "team play: a fallen player is only reported (its \"fallen\" term; "
+                             "\"report\"), or stood up where it lies after 2 s, facing the way "
+                             "its side plays (\"stand_up\")",
+                             {"report", "stand_up"});
+}
+
+void SmplMatch::stand_up_fallen(const std::function<double(int)>& yaw) {
   for (int s = 0; s < slot_count(); ++s) {
-    if (!down(s) || time_ - down_since_[s] < after_s) continue;
+    if (!down(s) || time_ - down_since_[s] < kStandUpAfterS) continue;
     const Eigen::Vector3d at = player(s).body_state(0).position;
     reset_player(s, {{at.x(), at.y(), 0}, yaw(s)});
     log(referee_event("stood_up", time_, s));

@@ -31,6 +31,8 @@ namespace olympics::sports {
 
 class SmplMatch : public SportMatch {
  public:
+  // The `falls` setting of the sports that offer stand_up_fallen: "report" or "stand_up".
+  static SettingSpec falls_setting(const std::string& default_choice);
   int slot_count() const final { return mode_.slot_count(); }
   int team_count() const final { return mode_.team_count(); }
   int team_of(int slot) const final { return mode_.slot_teams[slot]; }
@@ -97,9 +99,10 @@ class SmplMatch : public SportMatch {
   // and which slots went down this tick.
   bool down(int slot) const { return down_[slot] != 0; }
   const std::vector<int>& fell_this_tick() const { return fell_; }
-  // Stands every player that has been down `after_s` or longer up where it lies, facing
+  // Stands every player that has been down kStandUpAfterS or longer up where it lies, facing
   // `yaw(slot)`, and logs "stood_up" (a sport's `falls: stand_up` setting: a game goes on).
-  void stand_up_fallen(double after_s, const std::function<double(int)>& yaw);
+  void stand_up_fallen(const std::function<double(int)>& yaw);
+  static constexpr double kStandUpAfterS = 2;
   const core::FallDetector& fall_detector(int slot) const { return falls_[slot]; }
   // The reward terms of a slot for this tick, in layout order; its reward is their weighted sum.
   void set_reward(int slot, std::span<const float> terms);

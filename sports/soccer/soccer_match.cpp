@@ -204,8 +204,7 @@ void SoccerMatch::settle_penalty() {
 }
 
 void SoccerMatch::settle_team_play() {
-  if (config_.stand_up)
-    stand_up_fallen(config_.stand_up_after_s, [this](int s) { return attack(s) > 0 ? 0.0 : M_PI; });
+  if (config_.stand_up) stand_up_fallen([this](int s) { return attack(s) > 0 ? 0.0 : M_PI; });
   const auto stop = referee_.update(ball_->position(), time());
   const int scoring = stop && stop->goal ? stop->goal->team : -1;
   for (int s = 0; s < slot_count(); ++s) {

@@ -31,8 +31,7 @@ struct SoccerConfig {
   Field field;
   SoccerRules rules;
   double penalty_distance = 11;  // m from the goal line to the penalty spot
-  bool stand_up = false;         // falls: a player down this long is stood up where it lies
-  double stand_up_after_s = 2;
+  bool stand_up = false;         // falls: a player down 2 s is stood up where it lies
 };
 
 SoccerMode soccer_mode(const std::string& mode);

@@ -37,10 +37,7 @@ std::vector<SettingSpec> SoccerSport::settings() const {
                           "s after which a restart nobody takes is in play anyway", 1, 60),
       SettingSpec::number("penalty_distance", 11.0,
                           "m from the goal line to the penalty spot (penalty kick modes)", 1, 20),
-      SettingSpec::choice("falls", "report",
-                          "a fallen player is only reported (its \"fallen\" term), or stood up "
-                          "where it lies after 2 s (\"stand_up\")",
-                          {"report", "stand_up"}),
+      SmplMatch::falls_setting("report"),
   };
 }
 
