@@ -43,7 +43,8 @@ void set_arm(std::span<float> a, bool right, double aim, const ArmPose& p) {
   set_joint(a, elbow, 1, -p.roll);
   set_joint(a, right ? kRWrist : kLWrist, 0, side * p.wrist);
   const int fingers = right ? kRFingers : kLFingers;
-  for (int f = 0; f < kThumbLinks; ++f) set_joint(a, fingers + f, 0, side * p.curl);
+  for (int f = 0; f < kLinksBeforeThumb; ++f)  // the fingers, not the thumb
+    set_joint(a, fingers + f, 0, side * p.curl);
 }
 
 // Standing balance by the ankles and hips (the stepping controller's standing strategy, for the

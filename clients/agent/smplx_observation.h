@@ -35,8 +35,8 @@ enum Body {
   kRWrist = 36,
   kRFingers = 37,
 };
-constexpr int kFingerLinks = 15;
-constexpr int kThumbLinks = 12;  // the thumb's three links are the last of the fifteen
+// Of each hand's 15 finger links: the four fingers' (3 each) come first, the thumb's 3 last.
+constexpr int kLinksBeforeThumb = 12;
 
 inline Eigen::Vector3d vec3(std::span<const float> o, int at) {
   return {o[at], o[at + 1], o[at + 2]};
