@@ -19,6 +19,9 @@ struct Entrant {
   std::string name;    // unique in the tournament
   std::string policy;  // what olympics-agent plays: zero, random, scripted, mlp:FILE; or live:NAME
   std::uint64_t seed = 0;
+  // A trainer's client that joins the matches the league assigns it (live:NAME), not a process
+  // the league starts.
+  bool is_live() const { return policy.rfind("live:", 0) == 0; }
 };
 
 struct TournamentSpec {

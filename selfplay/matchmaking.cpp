@@ -120,7 +120,7 @@ Scheduler::Verdict SelfplayScheduler::schedule(TournamentSpec& spec, const std::
     const auto& e = spec.entrants[i];
     if (e.policy.rfind("mlp:", 0) == 0)
       snapshots.emplace_back(snapshot_version(e.policy), i);
-    else if (e.policy.rfind("live:", 0) == 0)
+    else if (e.is_live())
       live = i;
     else
       roster.bots.push_back(i);

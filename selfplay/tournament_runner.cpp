@@ -17,6 +17,11 @@ namespace olympics::selfplay {
 namespace {
 constexpr auto kRequestResend = std::chrono::milliseconds(250);
 constexpr auto kProbeInterval = std::chrono::seconds(1);
+// How long an agent waits on a silent server before it gives up. A live learner's matches stand
+// still while its trainer updates the policy (minutes with a large network on a CPU), so its
+// opponents wait as long as the trainer's client does.
+constexpr const char* kAgentTimeoutS = "60";
+constexpr const char* kAgentTimeoutWithLiveLearnerS = "600";
 }  // namespace
 
 std::vector<int> team_slots(const std::vector<int>& slot_teams, int team) {
@@ -220,9 +225,12 @@ void TournamentRunner::start_workers(Game& g) {
   f.workers_started = true;
   f.last_request = Clock::now();
   assign_live(g);
+  const char* timeout_s = spec_.entrants[g.home].is_live() || spec_.entrants[g.away].is_live()
+                              ? kAgentTimeoutWithLiveLearnerS
+                              : kAgentTimeoutS;
   for (int team = 0; team < 2; ++team) {
     const Entrant& e = spec_.entrants[team == 0 ? g.home : g.away];
-    if (e.policy.rfind("live:", 0) == 0) continue;  // a live learner joins by itself: assign_live()
+    if (e.is_live()) continue;  // a live learner joins by itself: assign_live()
     std::vector<std::string> argv = {settings_.agent_program,
                                      "--match",
                                      g.match_id,
@@ -237,7 +245,7 @@ void TournamentRunner::start_workers(Game& g) {
                                      "--policy-id",
                                      e.policy,
                                      "--timeout",
-                                     "60"};
+                                     timeout_s};
     if (!settings_.lcm_url.empty()) argv.insert(argv.end(), {"--lcm-url", settings_.lcm_url});
     if (!settings_.secret_file.empty())
       argv.insert(argv.end(), {"--secret", settings_.secret_file});
@@ -250,7 +258,7 @@ void TournamentRunner::start_workers(Game& g) {
 void TournamentRunner::assign_live(const Game& g) {
   for (int team = 0; team < 2; ++team) {
     const Entrant& e = spec_.entrants[team == 0 ? g.home : g.away];
-    if (e.policy.rfind("live:", 0) != 0) continue;
+    if (!e.is_live()) continue;
     olympics::league_assignment_t a;
     a.protocol_version = protocol::kProtocolVersion;
     a.league = spec_.name;
