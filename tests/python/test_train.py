@@ -54,6 +54,35 @@ class ToyVectorEnv:
         pass
 
 
+class ToyLeagueEnv(ToyVectorEnv):
+    """ToyVectorEnv stepped as a league's live learner steps its matches (start/send/recv): at
+    each recv a random part of the environments is ready, and environment 0 never gets a match
+    after its first (the league started none for it)."""
+
+    def start(self):
+        self.o = self._obs()
+        self.ready = {e: (self.o[e].copy(), np.zeros(self.agents, np.float32), False)
+                      for e in range(self.n)}
+
+    def send(self, actions, env_ids):
+        for row, e in enumerate(env_ids):
+            target = np.clip(self.o[e] @ self.w.T, -1, 1)
+            reward = (1 - ((actions[row] - target) ** 2).mean(-1)).astype(np.float32)
+            self.t[e] += 1
+            over = bool(self.t[e] >= self.LENGTH)
+            self.t[e] = 0 if over else self.t[e]
+            self.o[e] = self.rng.normal(0, 1, (self.agents, self.OBS))
+            if not (over and e == 0):
+                self.ready[e] = (self.o[e].copy(), reward, over)
+
+    def recv(self, min_ready=1):
+        envs = [e for e in sorted(self.ready) if self.rng.random() < 0.6] or [min(self.ready)]
+        obs, reward, over = (np.stack(x) for x in zip(*(self.ready.pop(e) for e in envs)))
+        flags = np.repeat(over[:, None], self.agents, axis=1)
+        infos = {"episode_over": over, "reward_terms": reward[..., None], "final_observation": obs}
+        return np.array(envs), obs, reward, flags, flags, infos
+
+
 TOY_SPEC = {"slot_teams": [0], "obs_size": ToyVectorEnv.OBS, "action_size": ToyVectorEnv.ACT,
             "observation": [{"name": "x", "size": ToyVectorEnv.OBS}],
             "rewards": [{"name": "match"}]}
@@ -77,6 +106,22 @@ class TrainTest(unittest.TestCase):
         first = np.mean([float(r["episode_return"]) for r in rows[:5]])
         last = np.mean([float(r["episode_return"]) for r in rows[-5:]])
         # A random guess scores about 16 * (1 - 0.6); the map is learnable to nearly 16.
+        self.assertGreater(last, first + 2.0, f"return {first:.2f} -> {last:.2f}")
+
+    def test_a_league_run_steps_whichever_matches_are_ready_and_learns(self):
+        # --league collects asynchronously: environment 0 waits for good after its first match
+        # and holds no other; each environment's steps are their own sequence.
+        args = run_args(os.path.join(self.dir, "toy-league"), "--league", "toy", "--samples",
+                        "40000", "--num-envs", "16", "--horizon", "32", "--hidden", "64", "64",
+                        "--lr", "1e-3", "--learn-std", "--log-std", "-1")
+        trainer = train.Trainer(args, spec=TOY_SPEC)
+        trainer.train(make_env=lambda: ToyLeagueEnv(args.num_envs))
+        rows = read_metrics(args.run)
+        self.assertGreaterEqual(trainer.samples, 40000)
+        sizes = np.diff([0] + [int(r["samples"]) for r in rows])
+        self.assertTrue(all(sizes >= 16 * 32), f"every batch full: {sizes}")
+        returns = [float(r["episode_return"]) for r in rows if r["episode_return"]]
+        first, last = np.mean(returns[:5]), np.mean(returns[-5:])
         self.assertGreater(last, first + 2.0, f"return {first:.2f} -> {last:.2f}")
 
     def test_episode_figures_are_each_episodes_own_sums(self):
@@ -165,9 +210,9 @@ class TrainTest(unittest.TestCase):
         seen = []
         opponent_actions = trainer.opponent_actions
 
-        def watch(raw):
+        def watch(raw, env_ids):
             seen.append(trainer.frozen[0].state_dict()["actor.0.weight"].clone())
-            return opponent_actions(raw)
+            return opponent_actions(raw, env_ids)
         trainer.opponent_actions = watch
         trainer.train(make_env=lambda: ToyVectorEnv(4, agents=2))
         self.assertEqual(trainer.iteration, 8)
@@ -299,7 +344,8 @@ class TrainTest(unittest.TestCase):
         # snapshots the trainer publishes as it goes.
         run, db = os.path.join(self.dir, "league-run"), os.path.join(self.dir, "league.db")
         server = subprocess.Popen([f"{BIN}/olympics-server", "serve", "--lcm-url", URL, "--id",
-                                   "leaguetrain", "--results", os.path.join(self.dir, "l.db")],
+                                   "leaguetrain", "--results", os.path.join(self.dir, "l.db"),
+                                   *train.TRAINING_SERVER_FLAGS],
                                   stdout=subprocess.DEVNULL, stderr=subprocess.STDOUT)
         league = subprocess.Popen(
             [f"{BIN}/olympics-league", "selfplay", "--db", db, "--name", "lt", "--learner",

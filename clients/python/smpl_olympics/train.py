@@ -149,14 +149,20 @@ def find_program(name):
              f"set OLYMPICS_BIN_DIR")
 
 
+# A trainer's matches stand still while it updates the policy: the server it plays on waits for
+# its actions (10 min) instead of forfeiting it after a few missed ticks. --spawn-server starts
+# one so; a league run's server needs them too (docs/training.md).
+TRAINING_SERVER_FLAGS = ["--silent-timeout-s", "600", "--action-deadline-ms", "600000",
+                         "--max-missed-ticks", "100000"]
+
+
 def spawn_server(run_dir):
     url = f"udpm://239.255.76.67:{20000 + os.getpid() % 20000}?ttl=0&recv_buf_size=4194304"
     log = open(os.path.join(run_dir, "server.log"), "a")
     server = subprocess.Popen(
         [find_program("olympics-server"), "serve", "--lcm-url", url, "--id", f"train{os.getpid()}",
          "--results", os.path.join(run_dir, "results.db"), "--capacity", "1024",
-         "--silent-timeout-s", "600", "--action-deadline-ms", "600000", "--max-missed-ticks",
-         "100000"], stdout=log, stderr=subprocess.STDOUT)
+         *TRAINING_SERVER_FLAGS], stdout=log, stderr=subprocess.STDOUT)
     give_up = time.monotonic() + 60
     while time.monotonic() < give_up:
         with open(log.name) as f:
@@ -196,6 +202,7 @@ class Trainer:
         self.norm = RunningNorm(self.obs_size)
         self.iteration, self.samples, self.wall = 0, 0, 0.0
         self.frozen = None  # (model, norm) of --opponent frozen
+        self.pending = {}  # --league: env -> (obs, action, log-prob, value) of its step in flight
         self.results = []  # results of ended matches not yet in a metrics row
         self.outcomes_missed = 0  # --win-reward: ended matches whose result did not come
         self.ppo = PpoSettings(lr=args.lr, epochs=args.epochs, minibatch=args.minibatch,
@@ -226,16 +233,17 @@ class Trainer:
             if p is not None:
                 p.restart()
 
-    def base_actions(self, raw_obs):
-        """[envs, learning, action] from the base policy (zeros without --residual)."""
+    def base_actions(self, raw_obs, env_ids):
+        """[rows, learning, action] from the base policy (zeros without --residual); row k is
+        environment env_ids[k]'s."""
         out = np.zeros((raw_obs.shape[0], len(self.learning), self.action_size), np.float32)
         if self.args.residual != "none":
-            for e in range(raw_obs.shape[0]):
+            for row, e in enumerate(env_ids):
                 for i, s in enumerate(self.learning):
-                    out[e, i] = self.base[e][i].act(raw_obs[e, s])
+                    out[row, i] = self.base[e][i].act(raw_obs[row, s])
         return out
 
-    def opponent_actions(self, raw_obs):
+    def opponent_actions(self, raw_obs, env_ids):
         out = np.zeros((raw_obs.shape[0], len(self.others), self.action_size), np.float32)
         if not self.others:
             return out
@@ -243,10 +251,42 @@ class Trainer:
             model, norm = self.frozen
             obs = torch.as_tensor(norm.normalise(raw_obs[:, self.others]))
             return np.clip(model.mean_action(obs).numpy(), -1, 1)
-        for e in range(raw_obs.shape[0]):
+        for row, e in enumerate(env_ids):
             for i, s in enumerate(self.others):
-                out[e, i] = self.opponents[e][i].act(raw_obs[e, s])
+                out[row, i] = self.opponents[e][i].act(raw_obs[row, s])
         return out
+
+    def act(self, raw_obs, env_ids):
+        """For these environments' observations [rows, slots, obs]: the learning slots'
+        normalised observations, sampled actions, log-probabilities and values, and the actions
+        to send for every slot."""
+        obs = self.norm.normalise(raw_obs[:, self.learning])  # [rows, L, obs]
+        act, logp, value = self.model.act(torch.as_tensor(obs))
+        act = act.numpy()
+        actions = np.zeros((len(env_ids), len(self.teams), self.action_size), np.float32)
+        # The network's part is clipped to the action space; a base or an opponent policy's
+        # is sent as it is (the scripted players use joint targets beyond +-1).
+        actions[:, self.learning] = np.clip(act, -1, 1) + self.base_actions(raw_obs, env_ids)
+        if self.others:
+            actions[:, self.others] = self.opponent_actions(raw_obs, env_ids)
+        self.norm.update(raw_obs[:, self.learning])
+        return obs, act, logp.numpy(), value.numpy(), actions
+
+    def learning_rewards(self, rewards, truncated, infos):
+        """The learning slots' rewards [rows, L] (the weighted terms with --term-weights). A
+        match cut by its time limit is not an end: its last reward bootstraps from its last
+        state."""
+        if self.term_weights is None:
+            r = rewards[:, self.learning].astype(np.float32)
+        else:
+            r = (infos["reward_terms"][:, self.learning] @ self.term_weights).astype(np.float32)
+        for row in np.nonzero(infos["episode_over"])[0]:
+            for i, s in enumerate(self.learning):
+                if truncated[row, s]:
+                    final = self.norm.normalise(infos["final_observation"][row, s])
+                    with torch.no_grad():
+                        r[row, i] += self.args.gamma * float(self.model.value(torch.as_tensor(final)))
+        return r
 
     # ---------------------------------------------------------------- the loop
     def make_env(self):
@@ -276,11 +316,18 @@ class Trainer:
         env = (make_env or self.make_env)()
         self.make_helpers(a.num_envs)
         try:
-            raw, _ = env.reset()
+            if a.league:  # matches start as the league assigns them: step whichever are ready
+                env.start()
+                self.pending = {}  # a new client: nothing of the last one's is in flight
+            else:
+                raw, _ = env.reset()
             ep = Episodes(a.num_envs, len(self.learning), len(self.term_names))
             while self.samples < a.samples:
                 started = time.monotonic()
-                batch, raw = self.collect(env, raw, ep)
+                if a.league:
+                    batch = self.collect_ready(env, ep)
+                else:
+                    batch, raw = self.collect(env, raw, ep)
                 stats = ppo_update(self.model, self.optimizer, batch, self.ppo, self.generator,
                                    train_policy=self.iteration >= a.critic_warmup)
                 self.iteration += 1
@@ -327,28 +374,11 @@ class Trainer:
         ended = {}  # match id -> (tick of this iteration, environment) of the matches that ended
         for t in range(T):
             ids = [env.match_id(e) for e in range(N)] if a.win_reward else None
-            obs = self.norm.normalise(raw[:, self.learning])  # [N, L, obs]
-            act, logp, value = self.model.act(torch.as_tensor(obs))
-            act = act.numpy()
-            actions = np.zeros((N, len(self.teams), self.action_size), np.float32)
-            # The network's part is clipped to the action space; a base or an opponent policy's
-            # is sent as it is (the scripted players use joint targets beyond +-1).
-            actions[:, self.learning] = np.clip(act, -1, 1) + self.base_actions(raw)
-            if self.others:
-                actions[:, self.others] = self.opponent_actions(raw)
-            next_raw, rewards, _, truncated, infos = env.step(actions)
-            if self.term_weights is None:
-                r = rewards[:, self.learning].astype(np.float32)
-            else:
-                r = (infos["reward_terms"][:, self.learning] @ self.term_weights).astype(np.float32)
+            obs, act, logp, value, actions = self.act(raw, range(N))
+            raw, rewards, _, truncated, infos = env.step(actions)
+            r = self.learning_rewards(rewards, truncated, infos)
             done = np.repeat(np.asarray(infos["episode_over"], np.float32)[:, None], L, axis=1)
             for e in np.nonzero(infos["episode_over"])[0]:
-                # A match cut by the time limit is not an end: bootstrap from its last state.
-                for i, s in enumerate(self.learning):
-                    if truncated[e, s]:
-                        final = self.norm.normalise(infos["final_observation"][e, s])
-                        with torch.no_grad():
-                            r[e, i] += a.gamma * float(self.model.value(torch.as_tensor(final)))
                 self.restart_helpers(e)
                 if ids is not None:
                     ended[ids[e]] = (t, e)
@@ -356,12 +386,10 @@ class Trainer:
                    infos["episode_over"])
             buf["obs"].append(obs)
             buf["actions"].append(act)
-            buf["log_probs"].append(logp.numpy())
-            buf["values"].append(value.numpy())
+            buf["log_probs"].append(logp)
+            buf["values"].append(value)
             buf["rewards"].append(r)
             buf["dones"].append(done)
-            self.norm.update(raw[:, self.learning])
-            raw = next_raw
         with torch.no_grad():
             last = self.model.value(torch.as_tensor(self.norm.normalise(raw[:, self.learning])))
         last = last.numpy()
@@ -374,6 +402,48 @@ class Trainer:
         return {"obs": flat(arr["obs"], self.obs_size), "actions": flat(arr["actions"], self.action_size),
                 "log_probs": flat(arr["log_probs"]), "advantages": flat(adv),
                 "returns": flat(ret)}, raw
+
+    def collect_ready(self, env, ep):
+        """--league: steps whichever matches are ready (env.recv) until the batch holds
+        horizon x num_envs steps, so a match waiting for the league to start holds no other.
+        Each environment's steps form their own sequence for GAE; a step whose action is out
+        when the batch is full (self.pending) completes in the next batch."""
+        a, L = self.args, len(self.learning)
+        keys = ("obs", "actions", "log_probs", "values", "rewards", "dones")
+        seqs, steps = {}, 0
+        while steps < a.horizon * a.num_envs:
+            ids, raw, rewards, _, truncated, infos = env.recv(min_ready=1)
+            r = self.learning_rewards(rewards, truncated, infos)
+            over = np.asarray(infos["episode_over"], bool)
+            completing = [row for row, e in enumerate(ids) if e in self.pending]
+            for row in completing:
+                e = ids[row]
+                step = self.pending.pop(e) + (r[row], np.full(L, over[row], np.float32))
+                seq = seqs.setdefault(e, {k: [] for k in keys})
+                for k, v in zip(keys, step):
+                    seq[k].append(v)
+                if over[row]:
+                    self.restart_helpers(e)
+            ep.add(rewards[completing][:, self.learning],
+                   infos["reward_terms"][completing][:, self.learning], over[completing],
+                   envs=[ids[row] for row in completing])
+            steps += len(completing)
+            obs, act, logp, value, actions = self.act(raw, ids)
+            env.send(actions, ids)
+            for row, e in enumerate(ids):
+                self.pending[e] = (obs[row], act[row], logp[row], value[row])
+        self.results.extend(env.results())
+        parts = {k: [] for k in ("obs", "actions", "log_probs", "advantages", "returns")}
+        for e, seq in seqs.items():
+            arr = {k: np.asarray(v, np.float32)[:, None] for k, v in seq.items()}  # [T_e, 1, ...]
+            last = self.pending[e][3][None]  # every environment that answered has an action out
+            adv, ret = gae(arr["rewards"], arr["values"], arr["dones"], last, a.gamma, a.lam)
+            for k, v in (("obs", arr["obs"].reshape(-1, self.obs_size)),
+                         ("actions", arr["actions"].reshape(-1, self.action_size)),
+                         ("log_probs", arr["log_probs"].ravel()), ("advantages", adv.ravel()),
+                         ("returns", ret.ravel())):
+                parts[k].append(v)
+        return {k: np.concatenate(v) for k, v in parts.items()}
 
     def credit_outcomes(self, env, ended, rewards):
         """--win-reward: +W (won) or -W (lost) on the last tick of each learning slot whose match
@@ -482,11 +552,13 @@ class Episodes:
         self.terms = np.zeros((num_envs, agents, terms))
         self.done_ret, self.done_len, self.done_terms = [], [], []
 
-    def add(self, rewards, terms, over):
-        self.ret += rewards
-        self.len += 1
-        self.terms += terms
-        for e in np.nonzero(over)[0]:
+    def add(self, rewards, terms, over, envs=None):
+        """One step of every environment, or of `envs` (rows in that order)."""
+        envs = np.arange(len(self.ret)) if envs is None else np.asarray(envs, int)
+        self.ret[envs] += rewards
+        self.len[envs] += 1
+        self.terms[envs] += terms
+        for e in envs[np.asarray(over, bool)]:
             # Copies: the rows are zeroed for the next episode right after.
             self.done_ret.extend(self.ret[e].tolist())
             self.done_len.extend(self.len[e].tolist())
