@@ -365,6 +365,9 @@ class TrainTest(unittest.TestCase):
             rows = read_metrics(run)
             self.assertEqual(len(rows), 10)
             self.assertGreater(sum(int(r["episodes"]) for r in rows), 3, "games ended and counted")
+            win_rates = [float(r["win_rate"]) for r in rows if r.get("win_rate")]
+            self.assertTrue(win_rates and all(0 <= w <= 1 for w in win_rates),
+                            f"the learner's own results, found by its name: {win_rates}")
             table = subprocess.run([f"{BIN}/olympics-league", "table", "--db", db, "--name", "lt",
                                     "--json"], capture_output=True, text=True, timeout=60)
             played = {e["entrant"]: e["wins"] + e["draws"] + e["losses"]

@@ -469,14 +469,21 @@ class Trainer:
 
     def scores(self):
         """The sport's own figure from the matches that ended: the learning team's score (ball
-        return: balls returned in; a match: points), and its win rate against an opponent."""
+        return: balls returned in; a match: points), and its win rate against an opponent (with
+        --league: against whoever the league picked; the learner's team, which varies from game
+        to game, is the one its client's name plays)."""
         results, self.results = self.results, []
-        if not results or self.args.league:  # the learner's side varies: the league rates it
+        if self.args.league:
+            results = [r for r in results if self.args.league in r["agent_names"]]
+            teams = [r["slot_team"][r["agent_names"].index(self.args.league)] for r in results]
+        else:
+            teams = [0] * len(results)
+        if not results:
             return {}
-        if self.shared:
+        if self.shared and not self.args.league:
             return {"score": float(np.mean([np.mean(r["scores"]) for r in results]))}
-        return {"score": float(np.mean([r["scores"][0] for r in results])),
-                "win_rate": float(np.mean([r["winner_team"] == 0 for r in results]))}
+        return {"score": float(np.mean([r["scores"][t] for r, t in zip(results, teams)])),
+                "win_rate": float(np.mean([r["winner_team"] == t for r, t in zip(results, teams)]))}
 
     # ---------------------------------------------------------------- files
     def snapshot_path(self, tag):
