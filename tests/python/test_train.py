@@ -6,6 +6,7 @@ import json
 import os
 import subprocess
 import tempfile
+import time
 import unittest
 
 import numpy as np
@@ -338,6 +339,26 @@ class TrainTest(unittest.TestCase):
             server.wait(timeout=30)
 
 
+    def test_a_killed_run_takes_its_spawned_server_with_it(self):
+        run = os.path.join(self.dir, "killed")
+        trainer = subprocess.Popen(
+            ["/usr/bin/python3", "-m", "smpl_olympics.train", "--run", run, "--sport", "sandbox",
+             "--mode", "solo", "--spawn-server", "--samples", "100000000", "--hidden", "16",
+             "--quiet"], env=dict(os.environ, OLYMPICS_BIN_DIR=BIN),
+            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        servers = lambda: [p for p in os.listdir("/proc") if p.isdigit()  # noqa: E731
+                           and run in _cmdline(p) and "olympics-server" in _cmdline(p)]
+        give_up = time.monotonic() + 60
+        while not os.path.exists(os.path.join(run, "metrics.csv")) and time.monotonic() < give_up:
+            time.sleep(0.1)
+        self.assertEqual(len(servers()), 1, "the run plays on its own server")
+        trainer.kill()
+        trainer.wait()
+        give_up = time.monotonic() + 20
+        while servers() and time.monotonic() < give_up:
+            time.sleep(0.1)
+        self.assertEqual(servers(), [], "the server outlived its run")
+
     def test_a_league_run_learns_from_games_against_opponents_the_league_picks(self):
         # olympics-league selfplay with a live learner: the trainer's client plays the learning
         # side of every game, the league picks each opponent by PFSP from the bot and the
@@ -379,6 +400,14 @@ class TrainTest(unittest.TestCase):
             for p in (league, server):
                 p.kill()
                 p.wait()
+
+
+def _cmdline(pid):
+    try:
+        with open(f"/proc/{pid}/cmdline", "rb") as f:
+            return f.read().decode(errors="replace")
+    except OSError:  # it ended meanwhile
+        return ""
 
 
 URL = f"udpm://239.255.76.67:{25000 + os.getpid() % 9000}?ttl=0&recv_buf_size=4194304"

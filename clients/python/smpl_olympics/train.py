@@ -15,9 +15,11 @@ mlp:FILE and the league play them), metrics.csv and curves.png. docs/training.md
 """
 import argparse
 import copy
+import ctypes
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import time
@@ -156,13 +158,22 @@ TRAINING_SERVER_FLAGS = ["--silent-timeout-s", "600", "--action-deadline-ms", "6
                          "--max-missed-ticks", "100000"]
 
 
+def _die_with_the_trainer():
+    """Runs in the spawned server before exec: Linux sends it SIGTERM when the trainer dies,
+    however it dies (a killed run left its server running before), and the server stores what
+    it has and stops."""
+    PR_SET_PDEATHSIG = 1
+    ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGTERM)
+
+
 def spawn_server(run_dir):
     url = f"udpm://239.255.76.67:{20000 + os.getpid() % 20000}?ttl=0&recv_buf_size=4194304"
     log = open(os.path.join(run_dir, "server.log"), "a")
     server = subprocess.Popen(
         [find_program("olympics-server"), "serve", "--lcm-url", url, "--id", f"train{os.getpid()}",
          "--results", os.path.join(run_dir, "results.db"), "--capacity", "1024",
-         *TRAINING_SERVER_FLAGS], stdout=log, stderr=subprocess.STDOUT)
+         *TRAINING_SERVER_FLAGS], stdout=log, stderr=subprocess.STDOUT,
+        preexec_fn=_die_with_the_trainer)
     give_up = time.monotonic() + 60
     while time.monotonic() < give_up:
         with open(log.name) as f:
