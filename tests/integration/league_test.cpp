@@ -140,9 +140,10 @@ TEST_P(LeagueState, KilledWithSigkillResumesToTheSameFinalTable) {
   const std::string name =
       "interrupted-" + std::to_string(std::chrono::system_clock::now().time_since_epoch().count());
   auto first = league(servers, db, name, dir + "/b1.log");
-  // Kill it once some, but not all, games are done.
+  // Kill it once some, but not all, games are done: as soon as one is (six sandbox games take
+  // about a second, and a loaded machine polls PostgreSQL slowly).
   const bool killed =
-      wait_for_games(db, name, [](const auto& games) { return done_games(games) >= 2; });
+      wait_for_games(db, name, [](const auto& games) { return done_games(games) >= 1; });
   first->signal(SIGKILL);
   ASSERT_TRUE(killed) << first->output();
   first->wait(10);

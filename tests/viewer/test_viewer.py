@@ -146,15 +146,16 @@ class ViewerTest(unittest.TestCase):
                 header = json.loads(first[5:])
                 self.assertEqual((header["sport"], header["match_id"]),
                                  ("table_tennis", live["match_id"]))
-            state, _ = browser.probe(f"{base}/?live={live['match_id']}&camera=broadcast",
-                                     budget_ms=6000)
-            self.assertTrue(state["live"])
-            self.assertGreater(state["tick"], live["tick"])
+            # The page, in real time: it draws the match while it is played and keeps up.
+            with browser.LivePage(f"{base}/?live={live['match_id']}&camera=broadcast") as page:
+                state = page.wait_for_probe(lambda s: s.get("live") and s["tick"] > live["tick"])
+                self.assertFalse(state["ended"])
+                later = page.wait_for_probe(lambda s: s["tick"] >= state["tick"] + 30)
+                self.assertEqual(later["frame"], later["frames"] - 1)  # following the newest
+                image = page.screenshot(os.path.join(self.dir, "live.png"))
+                self.assertGreater(sum(browser.reddish(p) for row in image[2] for p in row), 50)
             listing, _ = browser.probe(f"{base}/", budget_ms=3000)
             self.assertIn(live["match_id"], [m["match_id"] for m in listing["matches"]])
-            image = browser.screenshot(f"{base}/?live={live['match_id']}&camera=broadcast",
-                                       os.path.join(self.dir, "live.png"), budget_ms=6000)
-            self.assertGreater(sum(browser.reddish(p) for row in image[2] for p in row), 50)
         finally:
             for p in procs:
                 p.kill()
