@@ -17,6 +17,10 @@ namespace olympics::selfplay {
 namespace {
 constexpr auto kRequestResend = std::chrono::milliseconds(250);
 constexpr auto kProbeInterval = std::chrono::seconds(1);
+// Servers announce themselves once a second (MatchHost's announce_interval_s): before its first
+// game a run listens this long, so that its first games spread over every server rather than
+// all going to the first one heard.
+constexpr auto kFirstListen = std::chrono::milliseconds(1200);
 // How long an agent waits on a silent server before it gives up. A live learner's matches stand
 // still while its trainer updates the policy (minutes with a large network on a CPU), so its
 // opponents wait as long as the trainer's client does.
@@ -125,6 +129,7 @@ bool TournamentRunner::schedule_more() {
 
 void TournamentRunner::dispatch() {
   const auto now = Clock::now();
+  if (now - started_ < kFirstListen && !heard_every_named_server()) return;
   for (auto& g : games_) {
     if (static_cast<int>(in_flight_.size()) >= settings_.parallel) return;
     if (g.status != GameStatus::Pending) continue;
@@ -144,6 +149,13 @@ void TournamentRunner::dispatch() {
     save(g);  // before asking, so a restart asks again with the same id
     in_flight_[g.index];
   }
+}
+
+bool TournamentRunner::heard_every_named_server() const {
+  if (settings_.servers.empty()) return false;
+  for (const auto& id : settings_.servers)
+    if (!servers_.contains(id)) return false;
+  return true;
 }
 
 void TournamentRunner::keep_in_touch() {

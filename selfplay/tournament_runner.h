@@ -61,6 +61,7 @@ class TournamentRunner {
 
   bool schedule_more();
   void dispatch();
+  bool heard_every_named_server() const;  // each of --servers has announced
   void on_created(const olympics::match_created_t& created);
   void on_result(const olympics::match_result_t& result);
   void on_announce(const olympics::server_announce_t& announce);
