@@ -9,6 +9,7 @@
 #include "core/humanoid_assets.h"
 #include "core/humanoid_scene.h"
 #include "registry.h"
+#include "standing_balance.h"
 #include "zero_play.h"
 
 namespace olympics::sports::basketball {
@@ -192,31 +193,40 @@ TEST(BasketballFreeThrow, TheBallIsPresentedStillBetweenTheHandsAtTheStart) {
 
 // The hold: the SMPL-X humanoid's arms forward, palms facing (shoulders turned 100 degrees in,
 // forearms rolled 90), the ball placed between the palms, then the shoulders turned `squeeze`
-// degrees further so that the palms press on it. The pelvis is fixed to the world here so that
-// the grip alone is measured (standing while holding needs a scripted SMPL-X balance, not yet
-// written). Returns the ball's largest distance from the palms' midpoint over `hold_s`, and its
-// distance from it 1 s after the arms open back to the T-pose.
+// degrees further so that the palms press on it; after `hold_s` the arms open back to the T-pose.
+// Fixed: the pelvis is fixed to the world, so that the grip alone is measured. Standing: nothing
+// holds the player up but its legs, driven by StandingBalance (standing_balance.h), which also
+// bears the ball's weight once it is held.
+enum class Stance { Fixed, Standing };
+
 struct Grip {
-  double max_slip = 0, after_release = 0;
+  double max_slip = 0;       // the ball's largest distance from the palms' midpoint, held
+  double after_release = 0;  // its distance from it 1 s after the arms opened
+  double lowest_pelvis = 1e9, pelvis_travel = 0;  // m, from the ball's placing to the end
 };
 
-Grip hold(double squeeze_deg, double hold_s) {
+Grip hold(double squeeze_deg, double hold_s, Stance stance = Stance::Fixed) {
   const core::ModelSpec spec = core::load_humanoid(core::HumanoidKind::SmplX);
   core::HumanoidScene scene;
   scene.add_humanoid(spec, {});
   core::Humanoid& h = scene.humanoid(0);
-  dJointID fix = dJointCreateFixed(scene.world().world(), 0);
-  dJointAttach(fix, h.ode_body(0), 0);
-  dJointSetFixed(fix);
+  if (stance == Stance::Fixed) {
+    dJointID fix = dJointCreateFixed(scene.world().world(), 0);
+    dJointAttach(fix, h.ode_body(0), 0);
+    dJointSetFixed(fix);
+  }
+  StandingBalance balance(h);
   constexpr int kLShoulder = 15, kLElbow = 16, kLWrist = 17, kRShoulder = 34, kRElbow = 35,
                 kRWrist = 36;
   std::vector<double> targets(h.dof_count(), 0.0);
   const auto joint = [&](int body, int axis) -> double& { return targets[3 * (body - 1) + axis]; };
-  const auto pose = [&](double shoulder_deg) {
+  double shoulders_deg = 100;
+  const auto pose = [&] {
     const double d = M_PI / 180;
     std::fill(targets.begin(), targets.end(), 0.0);
-    joint(kLShoulder, 2) = -shoulder_deg * d, joint(kRShoulder, 2) = shoulder_deg * d;
-    if (shoulder_deg > 0) joint(kLElbow, 1) = -90 * d, joint(kRElbow, 1) = 90 * d;
+    joint(kLShoulder, 2) = -shoulders_deg * d, joint(kRShoulder, 2) = shoulders_deg * d;
+    if (shoulders_deg > 0) joint(kLElbow, 1) = -90 * d, joint(kRElbow, 1) = 90 * d;
+    if (stance == Stance::Standing) balance.write_leg_targets(targets);
     h.set_joint_targets(targets);
   };
   const auto palms = [&] {  // the palm boxes' centres (HUMANOID-SMPLX.md), their midpoint
@@ -225,22 +235,34 @@ Grip hold(double squeeze_deg, double hold_s) {
                            r.position + r.orientation * Vector3d(-.0029, -.0537, -.0044)));
   };
   const double dt = scene.settings().physics_dt();
-  pose(100);
-  for (int i = 0; i < 30; ++i) scene.tick();
-  equipment::Ball ball(scene.world(), equipment::basketball(), palms());
+  std::unique_ptr<equipment::Ball> ball;
   const auto step = [&] {
-    ball.prepare_step(dt);
+    pose();
+    if (ball) ball->prepare_step(dt);
     scene.physics_step();
   };
+  for (int i = 0; i < static_cast<int>(1.0 / dt); ++i) step();  // the arms come forward
+  ball = std::make_unique<equipment::Ball>(scene.world(), equipment::basketball(), palms());
+  balance.carry(ball->body());
+  const Vector3d placed_at = h.body_state(0).position;
   Grip g;
-  pose(100 + squeeze_deg);
+  const auto watch_pelvis = [&] {
+    const Vector3d pelvis = h.body_state(0).position;
+    g.lowest_pelvis = std::min(g.lowest_pelvis, pelvis.z());
+    g.pelvis_travel = std::max(g.pelvis_travel, (pelvis - placed_at).head<2>().norm());
+  };
+  shoulders_deg += squeeze_deg;
   for (int i = 0; i < static_cast<int>(hold_s / dt); ++i) {
     step();
-    g.max_slip = std::max(g.max_slip, (ball.position() - palms()).norm());
+    g.max_slip = std::max(g.max_slip, (ball->position() - palms()).norm());
+    watch_pelvis();
   }
-  pose(0);
-  for (int i = 0; i < static_cast<int>(1.0 / dt); ++i) step();
-  g.after_release = (ball.position() - palms()).norm();
+  shoulders_deg = 0;
+  for (int i = 0; i < static_cast<int>(1.0 / dt); ++i) {
+    step();
+    watch_pelvis();
+  }
+  g.after_release = (ball->position() - palms()).norm();
   return g;
 }
 
@@ -253,6 +275,21 @@ TEST(BasketballGrip, PressedPalmsHoldTheBallByFrictionForThreeSecondsAndOpenHand
 TEST(BasketballGrip, WithoutPressingThePalmsTheBallFalls) {
   // The same pose, palms not turned in onto the ball: nothing but friction held it before.
   const Grip g = hold(-10, 1.0);
+  EXPECT_GT(g.max_slip, 0.3);
+}
+
+TEST(BasketballGrip, AStandingPlayerHoldsTheBallForThreeSecondsAndOpenHandsLetGo) {
+  // Standing, the body sways and the ball rolls a little between the palms, but stays within
+  // 10 cm of their midpoint (its radius is 12 cm) until the arms open, and then falls.
+  const Grip g = hold(5, 3.0, Stance::Standing);
+  EXPECT_GT(g.lowest_pelvis, 0.85) << "the player stood (pelvis 0.93 m standing)";
+  EXPECT_LT(g.pelvis_travel, 0.2) << "in place";
+  EXPECT_LT(g.max_slip, 0.1) << "the ball stayed between the palms";
+  EXPECT_GT(g.after_release, 0.3) << "opening the arms let it fall";
+}
+
+TEST(BasketballGrip, AStandingPlayerWithoutPressingThePalmsDropsTheBall) {
+  const Grip g = hold(-10, 1.0, Stance::Standing);
   EXPECT_GT(g.max_slip, 0.3);
 }
 
