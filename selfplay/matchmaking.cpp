@@ -103,11 +103,9 @@ Scheduler::Verdict SelfplayScheduler::schedule(TournamentSpec& spec, const std::
     if (g.index > game - options_.lag) break;
     if (g.status != GameStatus::Done) return Verdict::Wait;
   }
-  const auto now = std::chrono::steady_clock::now();
-  if (now - last_scan_ > std::chrono::milliseconds(500)) {
-    scan_snapshots(spec);
-    last_scan_ = now;
-  }
+  // Every decision sees every snapshot published so far: a learner publishes one per update,
+  // and a short game can end within a fraction of a second of the last look.
+  scan_snapshots(spec);
   PayoffMatrix payoff(static_cast<int>(spec.entrants.size()));
   for (const auto& g : games)
     if (g.index <= game - options_.lag && g.away >= 0 && g.home != g.away)

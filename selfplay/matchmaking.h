@@ -18,7 +18,6 @@
 // uninterrupted one would.
 #pragma once
 
-#include <chrono>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -63,7 +62,6 @@ class SelfplayScheduler : public Scheduler {
  private:
   void scan_snapshots(TournamentSpec& spec);
   SelfplayOptions options_;
-  std::chrono::steady_clock::time_point last_scan_;
 };
 
 // The snapshot version in a file name ("policy-v12.safetensors" -> 12), -1 if none.

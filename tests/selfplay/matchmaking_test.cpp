@@ -1,8 +1,11 @@
 #include "matchmaking.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
 
 namespace olympics::selfplay {
@@ -102,6 +105,32 @@ TEST(Matchmaking, UnknownStrategyAndVersions) {
   EXPECT_EQ(snapshot_version("policy-v12.safetensors"), 12);
   EXPECT_EQ(snapshot_version("v3.safetensors"), 3);
   EXPECT_EQ(snapshot_version("notes.txt"), -1);
+}
+
+TEST(Matchmaking, TheSchedulerSeesASnapshotTheMomentItsNameAppears) {
+  // A live learner publishes a snapshot per update, and a short game can end within
+  // milliseconds of the last decision: the next decision must already see it.
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      fs::temp_directory_path() / ("olympics-snapshots-" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  SelfplayOptions o;
+  o.snapshots_dir = dir.string(), o.strategy = "latest", o.learner = "lt";
+  SelfplayScheduler scheduler(o);
+  TournamentSpec spec;
+  spec.entrants = {{"lt", "live:lt", 0}};
+  std::vector<Pairing> out;
+  EXPECT_EQ(scheduler.schedule(spec, {}, out), Scheduler::Verdict::Wait) << "nothing published";
+  std::ofstream(dir / "policy-v00001.safetensors") << "x";
+  std::ofstream(dir / "policy-v00002.safetensors.partial") << "x";  // still being written
+  ASSERT_EQ(scheduler.schedule(spec, {}, out), Scheduler::Verdict::Added);
+  ASSERT_EQ(spec.entrants.size(), 2u) << "the finished snapshot only";
+  EXPECT_EQ(spec.entrants[1].name, "mlp-policy-v00001");
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].home, 0);
+  EXPECT_EQ(out[0].away, 1);
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@ layers.<i>.weight [out, in] and layers.<i>.bias [out], optional obs_mean / obs_s
 format=olympics-mlp, activation, output, obs_size, action_size plus any keywords you pass.
 """
 import json
+import os
 import struct
 
 import numpy as np
@@ -65,9 +66,13 @@ def export_mlp(model, path, activation=None, output="none", obs_mean=None, obs_s
         offset += len(data)
     text = json.dumps(header).encode()
     text += b" " * (-len(text) % 8)  # safetensors aligns the data
-    with open(path, "wb") as f:
+    # Written beside and renamed into place: a league watching the folder registers a snapshot
+    # as soon as its name appears, and must never load a half-written file.
+    partial = f"{path}.partial"
+    with open(partial, "wb") as f:
         f.write(struct.pack("<Q", len(text)))
         f.write(text)
         for blob in blobs:
             f.write(blob)
+    os.replace(partial, path)
     return path
