@@ -38,7 +38,8 @@ bool starts_with(const std::string& s, const char* prefix) { return s.rfind(pref
 Role sender_of(const std::string& channel) {
   for (const char* server : {kAnnounce, kCreated, kJoinReply, kStart, kResult, kError})
     if (channel == server) return Role::Server;
-  return starts_with(channel, kObsPrefix) ? Role::Server : Role::Client;
+  return starts_with(channel, kObsPrefix) || starts_with(channel, kObsBundlePrefix) ? Role::Server
+                                                                                    : Role::Client;
 }
 
 Authenticator::Authenticator(const std::string& secret) {

@@ -21,6 +21,17 @@ inline constexpr const char* kActPrefix = "OLY_ACT_";
 inline std::string obs_channel(const std::string& match_id) { return kObsPrefix + match_id; }
 inline std::string action_channel(const std::string& match_id) { return kActPrefix + match_id; }
 
+// Bundles (bundle_t): a client's actions for every match it plays on one server, and one server
+// worker's observations for one client, each in as few datagrams as fit.
+inline constexpr const char* kActionBundlePrefix = "OLY_BACT_";
+inline constexpr const char* kObsBundlePrefix = "OLY_BOBS_";
+inline std::string action_bundle_channel(const std::string& server_id) {
+  return kActionBundlePrefix + server_id;
+}
+inline std::string obs_bundle_channel(const std::string& client_id) {
+  return kObsBundlePrefix + client_id;
+}
+
 // Loopback multicast with a 4 MB receive buffer: the default for one machine.
 inline constexpr const char* kDefaultLcmUrl =
     "udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304";

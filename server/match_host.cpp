@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "bundle.h"
 #include "channels.h"
 #include "olympics/action_batch_t.hpp"
 #include "olympics/error_t.hpp"
@@ -140,6 +141,9 @@ void MatchHost::run(const std::atomic<bool>& stop) {
                          if (!beat) return transport_.count_malformed();
                          route(beat->match_id, ch, d, n, beat->client_id);
                        });
+  transport_.subscribe(
+      protocol::action_bundle_channel(settings_.server_id),
+      [this](const std::string&, const std::uint8_t* d, int n) { on_action_bundle(d, n); });
   exact_action_channels_ = transport_.url().rfind("mpudpm://", 0) == 0;
   if (!exact_action_channels_)
     transport_.subscribe(std::string(protocol::kActPrefix) + ".*",
@@ -301,6 +305,7 @@ void MatchHost::on_request(const std::uint8_t* data, int size) {
     }
   }
   Worker& w = *workers_[worker];
+  runtime->set_outbox(&w.outbox);
   {
     std::lock_guard lock(w.mutex);
     w.entries[id.match_id].match = std::move(runtime);
@@ -342,8 +347,34 @@ std::string MatchHost::sender(const std::string& client_id, const std::uint8_t* 
   return batch ? batch->client_id : "";
 }
 
-void MatchHost::route(const std::string& match_id, const std::string& channel,
-                      const std::uint8_t* data, int size, const std::string& client_id) {
+// A vector client's actions for its matches here: each part goes where it would have gone alone.
+void MatchHost::on_action_bundle(const std::uint8_t* data, int size) {
+  auto bundle = protocol::decode<olympics::bundle_t>(data, size);
+  std::vector<bool> woken(workers_.size(), false);
+  if (bundle && protocol::for_each_part(*bundle, [&](const std::string& match_id,
+                                                     const std::uint8_t* part, int part_size) {
+        const int worker =
+            route(match_id, protocol::action_channel(match_id), part, part_size, "", true);
+        if (worker >= 0) woken[worker] = true;
+      })) {
+    // Each worker once, with all of its matches' actions in its inboxes: it steps them in one
+    // pass and answers with one bundle.
+    for (size_t w = 0; w < workers_.size(); ++w)
+      if (woken[w]) workers_[w]->wake.notify_one();
+    return;
+  }
+  transport_.count_malformed();
+  if (transport_.may_complain())
+    error("", bundle ? bundle->client_id : "", "MALFORMED",
+          "could not decode a bundle_t of " + std::to_string(size) +
+              " bytes: truncated, corrupted, parts that do not add up, or from another protocol "
+              "version; upgrade the client to protocol " +
+              std::to_string(protocol::kProtocolVersion));
+}
+
+int MatchHost::route(const std::string& match_id, const std::string& channel,
+                     const std::uint8_t* data, int size, const std::string& client_id,
+                     bool bundled) {
   int worker = -1;
   {
     std::lock_guard lock(routes_mutex_);
@@ -355,26 +386,28 @@ void MatchHost::route(const std::string& match_id, const std::string& channel,
       if (auto b = f->second.final_batches.find(from); b != f->second.final_batches.end())
         transport_.publish(f->second.obs_channel, b->second);
       transport_.publish(protocol::kResult, f->second.result);
-      return;
+      return -1;
     }
   }
   if (worker < 0) {
     // Another server's match on a shared network is not ours to refuse.
-    if (match_id.rfind(settings_.server_id + "-", 0) != 0) return;
+    if (match_id.rfind(settings_.server_id + "-", 0) != 0) return -1;
     // Ours, but not (or no longer) here: a match of an earlier run of this server. Its client
     // learns so at once (its id addresses the error), and gives up.
-    return error(match_id, sender(client_id, data, size), "UNKNOWN_MATCH",
-                 "no match \"" + match_id + "\" on server " + settings_.server_id +
-                     "; request one on " + protocol::kRequest + " and use the match_id it returns");
+    error(match_id, sender(client_id, data, size), "UNKNOWN_MATCH",
+          "no match \"" + match_id + "\" on server " + settings_.server_id + "; request one on " +
+              protocol::kRequest + " and use the match_id it returns");
+    return -1;
   }
   Worker& w = *workers_[worker];
   {
     std::lock_guard lock(w.mutex);
     auto it = w.entries.find(match_id);
-    if (it == w.entries.end()) return;  // finishing right now
-    it->second.inbox.push_back({channel, std::vector<std::uint8_t>(data, data + size)});
+    if (it == w.entries.end()) return -1;  // finishing right now
+    it->second.inbox.push_back({channel, std::vector<std::uint8_t>(data, data + size), bundled});
   }
-  w.wake.notify_one();
+  if (!bundled) w.wake.notify_one();  // a bundle's workers are woken once it is all routed
+  return worker;
 }
 
 void MatchHost::worker_loop(Worker& w) {
@@ -389,14 +422,16 @@ void MatchHost::worker_loop(Worker& w) {
     auto next = Clock::now() + std::chrono::milliseconds(100);
     std::vector<std::string> done;
     for (auto& [match, inbox] : work) {
-      for (auto& msg : inbox) match->handle(msg.channel, msg.bytes, Clock::now());
+      for (auto& msg : inbox) match->handle(msg.channel, msg.bytes, Clock::now(), msg.bundled);
       if (match->take_started()) note_players(*match);
       next = std::min(next, match->poll(Clock::now()));
       if (match->finished()) {
+        w.outbox.flush(transport_);  // its final observations before its result
         on_finished(*match);
         done.push_back(match->match_id());
       }
     }
+    w.outbox.flush(transport_);  // one bundle per bundling client for this whole pass
     std::unique_lock lock(w.mutex);
     for (const auto& id : done) w.entries.erase(id);
     w.wake.wait_until(lock, next, [&] {

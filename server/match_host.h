@@ -54,6 +54,7 @@ class MatchHost {
   struct Inbound {
     std::string channel;
     std::vector<std::uint8_t> bytes;
+    bool bundled = false;  // an action batch that came in a client's bundle
   };
   struct Entry {
     std::unique_ptr<MatchRuntime> match;
@@ -64,11 +65,14 @@ class MatchHost {
     std::mutex mutex;
     std::condition_variable wake;
     std::unordered_map<std::string, Entry> entries;
+    ObservationOutbox outbox;  // the worker thread's own
   };
 
   void on_request(const std::uint8_t* data, int size);
-  void route(const std::string& match_id, const std::string& channel, const std::uint8_t* data,
-             int size, const std::string& client_id);
+  // Queues a message for its match's worker (which one; -1: answered here or dropped).
+  int route(const std::string& match_id, const std::string& channel, const std::uint8_t* data,
+            int size, const std::string& client_id, bool bundled = false);
+  void on_action_bundle(const std::uint8_t* data, int size);
   static std::string sender(const std::string& client_id, const std::uint8_t* data, int size);
   void on_announce(const olympics::server_announce_t& announce);
   bool should_take_unaddressed_request();

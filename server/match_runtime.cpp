@@ -106,7 +106,7 @@ int MatchRuntime::client_index(const std::string& client_id) const {
 }
 
 void MatchRuntime::handle(const std::string& channel, const std::vector<std::uint8_t>& bytes,
-                          Clock::time_point now) {
+                          Clock::time_point now, bool bundled) {
   if (log_) log_->write(channel, bytes.data(), static_cast<int>(bytes.size()));
   auto malformed = [&](const char* type) {
     transport_.count_malformed();
@@ -130,8 +130,10 @@ void MatchRuntime::handle(const std::string& channel, const std::vector<std::uin
     else
       malformed("heartbeat_t");
   } else {
-    if (auto m = protocol::decode<olympics::action_batch_t>(bytes.data(), size))
-      on_actions(*m, now);
+    auto m = protocol::decode<olympics::action_batch_t>(bytes.data(), size);
+    // A bundle's part was routed by the match id the bundle gave it: it must say the same.
+    if (m && (!bundled || m->match_id == identity_.match_id))
+      on_actions(*m, now, bundled);
     else
       malformed("action_batch_t");
   }
@@ -282,7 +284,8 @@ void MatchRuntime::on_heartbeat(const olympics::heartbeat_t& beat, Clock::time_p
   clients_[c].last_heard = now;
 }
 
-void MatchRuntime::on_actions(const olympics::action_batch_t& batch, Clock::time_point now) {
+void MatchRuntime::on_actions(const olympics::action_batch_t& batch, Clock::time_point now,
+                              bool bundled) {
   if (phase_ == Phase::Finished) {  // it missed the end: say it again
     if (auto it = final_batches_.find(batch.client_id); it != final_batches_.end())
       send(description_.obs_channel, it->second);
@@ -294,6 +297,7 @@ void MatchRuntime::on_actions(const olympics::action_batch_t& batch, Clock::time
                  "actions from a client that has not joined match " + identity_.match_id +
                      "; send a join_t on " + protocol::kJoin + " first");
   clients_[c].last_heard = now;
+  clients_[c].bundled = bundled && outbox_;
   if (phase_ != Phase::Running)
     return error(batch.client_id, "FUTURE_TICK",
                  "the match has not started: not every slot is claimed yet");
@@ -427,7 +431,13 @@ void MatchRuntime::publish_observations(const std::vector<int>& clients) {
       b.truncated.push_back(out.truncated[s] != 0);
     }
     b.info = info_text;
-    send(description_.obs_channel, b);
+    if (k.bundled) {
+      const auto bytes = protocol::encode(b);
+      if (log_) log_->write(description_.obs_channel, bytes.data(), static_cast<int>(bytes.size()));
+      outbox_->add(k.id, identity_.match_id, bytes);
+    } else {
+      send(description_.obs_channel, b);
+    }
     if (out.match_over) final_batches_[k.id] = std::move(b);
   }
 }

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "observation_outbox.h"
 #include "olympics/action_batch_t.hpp"
 #include "olympics/heartbeat_t.hpp"
 #include "olympics/join_t.hpp"
@@ -59,9 +60,12 @@ class MatchRuntime {
   const olympics::match_created_t& description() const { return description_; }
   const std::string& match_id() const { return identity_.match_id; }
 
-  // A raw message from this match's channels (join, actions, heartbeat).
+  // A raw message from this match's channels (join, actions, heartbeat); `bundled`: an action
+  // batch that came in a client's bundle, whose answers then go to `outbox`.
   void handle(const std::string& channel, const std::vector<std::uint8_t>& bytes,
-              Clock::time_point now);
+              Clock::time_point now, bool bundled = false);
+  // Where observations for bundling clients go (the worker's outbox); none: each is sent alone.
+  void set_outbox(ObservationOutbox* outbox) { outbox_ = outbox; }
   // Advances timers; returns when it next needs to be polled.
   Clock::time_point poll(Clock::time_point now);
 
@@ -91,11 +95,12 @@ class MatchRuntime {
     Clock::time_point last_heard;
     int missed_in_row = 0;
     bool acted_this_tick = false;
+    bool bundled = false;  // its last actions came in a bundle: so do its observations
     std::int64_t seq = 0;
   };
 
   void on_join(const olympics::join_t& join, Clock::time_point now);
-  void on_actions(const olympics::action_batch_t& batch, Clock::time_point now);
+  void on_actions(const olympics::action_batch_t& batch, Clock::time_point now, bool bundled);
   void on_heartbeat(const olympics::heartbeat_t& beat, Clock::time_point now);
   void start(Clock::time_point now);
   void advance(Clock::time_point now);
@@ -120,6 +125,7 @@ class MatchRuntime {
   std::unique_ptr<sports::SportMatch> game_;
   protocol::Transport& transport_;
   std::unique_ptr<TrafficLog> log_;
+  ObservationOutbox* outbox_ = nullptr;
   std::unique_ptr<SceneRecorder> scene_;
   bool scene_started_ = false;
   olympics::match_created_t description_;

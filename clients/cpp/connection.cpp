@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "bundle.h"
 #include "channels.h"
 #include "olympics/join_reply_t.hpp"
 #include "olympics/join_t.hpp"
@@ -78,6 +79,21 @@ Connection::Connection(const ClientOptions& options)
   transport_.subscribe_to<olympics::match_result_t>(
       protocol::kResult, [this](const std::string&, const olympics::match_result_t& m) {
         if (auto it = watched_.find(m.match_id); it != watched_.end()) it->second = m;
+      });
+  transport_.subscribe_to<olympics::bundle_t>(
+      protocol::obs_bundle_channel(client_id_),
+      [this](const std::string&, const olympics::bundle_t& bundle) {
+        if (bundle.client_id != client_id_) return;
+        const bool whole = protocol::for_each_part(
+            bundle, [&](const std::string& match_id, const std::uint8_t* data, int size) {
+              auto it = bundled_observations_.find(match_id);
+              if (it == bundled_observations_.end()) return;  // a match already left
+              if (auto batch = protocol::decode<olympics::observation_batch_t>(data, size))
+                it->second(*batch);
+              else
+                transport_.count_malformed();
+            });
+        if (!whole) transport_.count_malformed();
       });
   transport_.subscribe_to<olympics::server_announce_t>(
       protocol::kAnnounce, [this](const std::string&, const olympics::server_announce_t& a) {
@@ -185,6 +201,16 @@ std::optional<Connection::ServerSeen> Connection::server(const std::string& serv
   auto it = servers_.find(server_id);
   if (it == servers_.end()) return std::nullopt;
   return it->second;
+}
+
+void Connection::on_bundled_observations(
+    const std::string& match_id,
+    std::function<void(const olympics::observation_batch_t&)> handler) {
+  bundled_observations_[match_id] = std::move(handler);
+}
+
+void Connection::forget_bundled_observations(const std::string& match_id) {
+  bundled_observations_.erase(match_id);
 }
 
 std::optional<Assignment> Connection::take_assignment(const std::string& learner) {

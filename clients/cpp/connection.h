@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <map>
 #include <optional>
 #include <set>
@@ -19,6 +20,7 @@
 #include "olympics/match_created_t.hpp"
 #include "olympics/match_request_t.hpp"
 #include "olympics/match_result_t.hpp"
+#include "olympics/observation_batch_t.hpp"
 #include "transport.h"
 
 namespace olympics::client {
@@ -117,6 +119,12 @@ class Connection {
   };
   std::optional<ServerSeen> server(const std::string& server_id) const;
 
+  // Observation batches of a match that come in this client's bundles (a server bundles them
+  // once the client sends its actions in bundles); one handler per match.
+  void on_bundled_observations(const std::string& match_id,
+                               std::function<void(const olympics::observation_batch_t&)> handler);
+  void forget_bundled_observations(const std::string& match_id);
+
   std::optional<Assignment> take_assignment(const std::string& learner);
   // Errors the server addressed to this client (or to its requests) since the last call.
   std::vector<olympics::error_t> take_errors();
@@ -133,7 +141,9 @@ class Connection {
   std::deque<Assignment> assignments_;  // heard, not yet handed out
   std::set<std::string> assigned_matches_;
   std::map<std::string, ServerSeen> servers_;  // by id, from their announcements
-  static constexpr size_t kMaxQueued = 1000;   // errors, assignments kept until taken
+  std::map<std::string, std::function<void(const olympics::observation_batch_t&)>>
+      bundled_observations_;                  // by match id
+  static constexpr size_t kMaxQueued = 1000;  // errors, assignments kept until taken
 };
 
 std::chrono::steady_clock::duration seconds(double s);

@@ -20,35 +20,40 @@ MatchSession::MatchSession(Connection& connection, olympics::match_created_t mat
   std::sort(slots_.begin(), slots_.end());
   connection_.watch(match_.match_id);
   obs_subscription_ = connection_.transport().subscribe_to<olympics::observation_batch_t>(
-      match_.obs_channel, [this](const std::string&, const olympics::observation_batch_t& b) {
-        if (b.client_id != connection_.client_id() || b.match_id != match_.match_id) return;
-        // New: a later tick, or the same tick ending the match (a forfeit ends it between
-        // ticks, so its final batch repeats the tick of the one before).
-        const bool ends = std::all_of(b.done.begin(), b.done.end(), [](auto d) { return d; });
-        if (b.tick < last_taken_tick_ ||
-            (b.tick == last_taken_tick_ && (last_taken_done_ || !ends)))
-          return;
-        // The shape the match described: another one would send a policy out of bounds.
-        if (b.slots != slots_ || b.obs_size != match_.obs_size)
-          return connection_.transport().count_malformed();
-        if (latest_ && (latest_->tick > b.tick || (latest_->tick == b.tick && !ends))) return;
-        Observation o;
-        o.tick = b.tick;
-        o.slots = b.slots;
-        o.obs = b.obs;
-        o.reward = b.reward;
-        o.term_names = b.term_names;
-        o.terms = b.terms;
-        o.done.assign(b.done.begin(), b.done.end());
-        o.truncated.assign(b.truncated.begin(), b.truncated.end());
-        o.info = b.info;
-        latest_ = std::move(o);
-      });
+      match_.obs_channel,
+      [this](const std::string&, const olympics::observation_batch_t& b) { on_observation(b); });
+  connection_.on_bundled_observations(
+      match_.match_id, [this](const olympics::observation_batch_t& b) { on_observation(b); });
   joined_at_ = last_heartbeat_ = Clock::now();
+}
+
+void MatchSession::on_observation(const olympics::observation_batch_t& b) {
+  if (b.client_id != connection_.client_id() || b.match_id != match_.match_id) return;
+  // New: a later tick, or the same tick ending the match (a forfeit ends it between
+  // ticks, so its final batch repeats the tick of the one before).
+  const bool ends = std::all_of(b.done.begin(), b.done.end(), [](auto d) { return d; });
+  if (b.tick < last_taken_tick_ || (b.tick == last_taken_tick_ && (last_taken_done_ || !ends)))
+    return;
+  // The shape the match described: another one would send a policy out of bounds.
+  if (b.slots != slots_ || b.obs_size != match_.obs_size)
+    return connection_.transport().count_malformed();
+  if (latest_ && (latest_->tick > b.tick || (latest_->tick == b.tick && !ends))) return;
+  Observation o;
+  o.tick = b.tick;
+  o.slots = b.slots;
+  o.obs = b.obs;
+  o.reward = b.reward;
+  o.term_names = b.term_names;
+  o.terms = b.terms;
+  o.done.assign(b.done.begin(), b.done.end());
+  o.truncated.assign(b.truncated.begin(), b.truncated.end());
+  o.info = b.info;
+  latest_ = std::move(o);
 }
 
 MatchSession::~MatchSession() {
   connection_.transport().unsubscribe(obs_subscription_);
+  connection_.forget_bundled_observations(match_.match_id);
   connection_.forget(match_.match_id);
 }
 
@@ -62,6 +67,13 @@ std::optional<Observation> MatchSession::take_observation() {
 }
 
 void MatchSession::act(int tick, const std::vector<std::vector<float>>& actions) {
+  prepare_action(tick, actions);
+  connection_.transport().publish_raw(match_.action_channel, last_action_bytes_.data(),
+                                      static_cast<int>(last_action_bytes_.size()));
+}
+
+const std::vector<std::uint8_t>& MatchSession::prepare_action(
+    int tick, const std::vector<std::vector<float>>& actions) {
   if (actions.size() != slots_.size())
     throw MatchError("BAD_ACTION", "act() got " + std::to_string(actions.size()) + " actions for " +
                                        std::to_string(slots_.size()) + " slots");
@@ -76,9 +88,8 @@ void MatchSession::act(int tick, const std::vector<std::vector<float>>& actions)
   b.action_size = actions.empty() ? 0 : static_cast<int>(actions[0].size());
   b.actions = actions;
   last_action_bytes_ = protocol::encode(b);
-  connection_.transport().publish_raw(match_.action_channel, last_action_bytes_.data(),
-                                      static_cast<int>(last_action_bytes_.size()));
   last_send_ = Clock::now();
+  return last_action_bytes_;
 }
 
 void MatchSession::maintain() {

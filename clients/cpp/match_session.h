@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "connection.h"
+#include "olympics/observation_batch_t.hpp"
 
 namespace olympics::client {
 
@@ -40,6 +41,10 @@ class MatchSession {
   std::optional<Observation> take_observation();
   // Actions for `tick`, one vector per owned slot, in slot order.
   void act(int tick, const std::vector<std::vector<float>>& actions);
+  // The same, encoded but not sent: the caller sends it in a bundle (protocol/bundle.h) with
+  // other matches' actions. Resends (maintain()) go on the match's own channel.
+  const std::vector<std::uint8_t>& prepare_action(int tick,
+                                                  const std::vector<std::vector<float>>& actions);
   // Heartbeats and resends when due; throws MatchError when the match is lost.
   void maintain();
   // The result, once the server has sent it.
@@ -51,6 +56,8 @@ class MatchSession {
  private:
   using Clock = Connection::Clock;
   void fail_if_lost();
+  // An observation batch from the match's channel or from one of this client's bundles.
+  void on_observation(const olympics::observation_batch_t& batch);
 
   Connection& connection_;
   olympics::match_created_t match_;

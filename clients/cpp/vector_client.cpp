@@ -1,6 +1,10 @@
 #include "vector_client.h"
 
 #include <algorithm>
+#include <map>
+
+#include "bundle.h"
+#include "channels.h"
 
 namespace olympics::client {
 namespace {
@@ -229,18 +233,31 @@ void VectorClient::send(std::span<const int> envs, std::span<const float> action
                                        std::to_string(agents) + " agents x " + std::to_string(row) +
                                        " actions");
   for (size_t i = 0; i < envs.size(); ++i) {
-    Env& env = *envs_.at(envs[i]);
+    const Env& env = *envs_.at(envs[i]);
     if (env.waiting || env.phase != Env::Phase::kPlaying)
       throw MatchError("NOT_READY", "environment " + std::to_string(envs[i]) +
                                         " has not returned its observation since its last send");
+  }
+  // One bundle (or as few as fit a datagram) per server for all of these matches' actions;
+  // the server then answers each of its workers' share with one bundle too.
+  std::map<std::string, protocol::BundleWriter> by_server;
+  for (size_t i = 0; i < envs.size(); ++i) {
+    Env& env = *envs_.at(envs[i]);
     std::vector<std::vector<float>> rows(agents);
     for (size_t a = 0; a < agents; ++a) {
       const float* at = actions.data() + (i * agents + a) * row;
       rows[a].assign(at, at + row);
     }
-    env.session->act(env.tick, rows);
+    const auto& match = env.session->match();
+    by_server.try_emplace(match.server_id, connection_.client_id())
+        .first->second.add(match.match_id, env.session->prepare_action(env.tick, rows));
     env.waiting = true;
     env.last_progress = Connection::Clock::now();
+  }
+  for (auto& [server_id, writer] : by_server) {
+    const std::string channel = protocol::action_bundle_channel(server_id);
+    for (const auto& bundle : writer.take())
+      connection_.transport().publish_raw(channel, bundle.data(), static_cast<int>(bundle.size()));
   }
 }
 

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "auth.h"
+#include "bundle.h"
 #include "channels.h"
 #include "league_store.h"
 #include "mutator.h"
@@ -35,6 +36,9 @@ std::string type_of(const std::string& channel) {
       {protocol::kResult, "match_result_t"},      {protocol::kError, "error_t"},
       {protocol::kHeartbeat, "heartbeat_t"},      {protocol::kLeague, "league_assignment_t"}};
   if (auto it = fixed.find(channel); it != fixed.end()) return it->second;
+  if (channel.rfind(protocol::kActionBundlePrefix, 0) == 0 ||
+      channel.rfind(protocol::kObsBundlePrefix, 0) == 0)
+    return "bundle_t";
   if (channel.rfind(protocol::kObsPrefix, 0) == 0) return "observation_batch_t";
   if (channel.rfind(protocol::kActPrefix, 0) == 0) return "action_batch_t";
   return "";
@@ -103,6 +107,16 @@ TEST(Fuzz, ThousandsOfMutatedMessagesOnEveryChannelCrashNothing) {
   assignment.learner = "x", assignment.match_id = "srv-1", assignment.num_slots = 1;
   assignment.slots = {0};
   seen[protocol::kLeague].push_back(protocol::encode(assignment));
+  // The agents send no bundles: one of a recorded action batch, to the server's bundle channel.
+  std::vector<std::vector<std::uint8_t>> bundles;
+  for (const auto& [ch, list] : seen)
+    if (ch.rfind(protocol::kActPrefix, 0) == 0 && bundles.empty()) {
+      protocol::BundleWriter writer("x");
+      writer.add(ch.substr(std::string(protocol::kActPrefix).size()), list.front());
+      bundles = writer.take();
+    }
+  EXPECT_FALSE(bundles.empty()) << "no action batch was seen to bundle";
+  if (!bundles.empty()) seen[protocol::action_bundle_channel("srv")] = bundles;
   std::vector<std::string> channels;
   for (const auto& [ch, list] : seen) channels.push_back(ch);
   std::printf("fuzzing %zu channels\n", channels.size());

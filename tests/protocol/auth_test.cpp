@@ -46,6 +46,8 @@ TEST(Auth, SendersAreTheServersOrTheClientsByChannel) {
   EXPECT_EQ(sender_of(kResult), Role::Server);
   EXPECT_EQ(sender_of(obs_channel("m")), Role::Server);
   EXPECT_EQ(sender_of(action_channel("m")), Role::Client);
+  EXPECT_EQ(sender_of(obs_bundle_channel("c")), Role::Server);
+  EXPECT_EQ(sender_of(action_bundle_channel("s")), Role::Client);
   EXPECT_EQ(sender_of(kJoin), Role::Client);
   EXPECT_EQ(sender_of(kLeague), Role::Client);
 }
