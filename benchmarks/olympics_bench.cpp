@@ -1,7 +1,7 @@
 // olympics-bench: performance figures, printed side by side with their references.
 //
 //   olympics-bench physics [--json] [--seconds S] [--repeats R] [--threads T] [--no-mujoco]
-//   olympics-bench server  [--json] [--seconds S] [--matches M] [--workers W]
+//   olympics-bench server  [--json] [--seconds S] [--matches M] [--workers W] [--vector]
 //   olympics-bench racket  [--json] [--episodes N] [--seconds S] [--repeats R]
 //   olympics-bench combat  [--json] [--bouts N] [--seconds S] [--repeats R]
 //   olympics-bench soccer  [--json] [--kicks N] [--matches M] [--half-s S] [--policies P,..]
@@ -50,6 +50,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"udpm", "mpudpm"}));
   serv->add_flag("--signed", server.signed_messages,
                  "with a deployment secret: every message signed and checked");
+  serv->add_flag("--vector", server.vector_client,
+                 "one vector client plays every match (bundled traffic), not one client each");
   serv->add_option("--live-viewers", server.live_viewers,
                    "this many HTTP clients watch the matches live (the viewer's cost)")
       ->check(CLI::NonNegativeNumber);

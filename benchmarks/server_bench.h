@@ -14,6 +14,9 @@ struct ServerBenchOptions {
   bool signed_messages = false;   // a deployment secret: every message signed and checked
   std::string provider = "udpm";  // LCM provider: udpm (one port) or mpudpm (channels on ports)
   int live_viewers = 0;           // HTTP clients watching matches live (serve --view-port)
+  // One vector client plays every match (its traffic in bundles, docs/protocol.md) instead of
+  // one client per match.
+  bool vector_client = false;
 };
 
 nlohmann::json run_server_bench(const ServerBenchOptions& options);
