@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "bundle.h"
@@ -86,10 +88,9 @@ Connection::Connection(const ClientOptions& options)
         if (bundle.client_id != client_id_) return;
         const bool whole = protocol::for_each_part(
             bundle, [&](const std::string& match_id, const std::uint8_t* data, int size) {
-              auto it = bundled_observations_.find(match_id);
-              if (it == bundled_observations_.end()) return;  // a match already left
+              if (!observation_routes_.count(match_id)) return;  // a match already left
               if (auto batch = protocol::decode<olympics::observation_batch_t>(data, size))
-                it->second(*batch);
+                deliver(match_id, std::move(*batch));
               else
                 transport_.count_malformed();
             });
@@ -162,7 +163,27 @@ void Connection::send_join(const std::string& match_id, const std::vector<int>& 
   j.policy_version = options_.policy_version;
   j.num_slots = static_cast<int>(slots.size());
   j.slots = slots;
+  listen_for_observations(match_id);
   transport_.publish(protocol::kJoin, j);
+}
+
+void Connection::listen_for_observations(const std::string& match_id) {
+  if (observation_routes_.count(match_id)) return;  // a join sent again
+  observation_routes_[match_id].subscription = transport_.subscribe(
+      protocol::obs_channel(match_id),
+      [this, match_id](const std::string&, const std::uint8_t* data, int size) {
+        if (auto batch = protocol::decode<olympics::observation_batch_t>(data, size))
+          deliver(match_id, std::move(*batch));
+        else
+          transport_.count_malformed();
+      });
+}
+
+void Connection::deliver(const std::string& match_id, olympics::observation_batch_t&& batch) {
+  auto it = observation_routes_.find(match_id);
+  if (it == observation_routes_.end() || batch.client_id != client_id_) return;
+  if (it->second.handler) return it->second.handler(std::move(batch));
+  push_bounded(it->second.held, std::move(batch), kMaxHeld);
 }
 
 std::optional<JoinReply> Connection::take_join_reply(const std::string& match_id) {
@@ -170,6 +191,7 @@ std::optional<JoinReply> Connection::take_join_reply(const std::string& match_id
   if (it == join_replies_.end()) return std::nullopt;
   auto reply = std::move(it->second);
   join_replies_.erase(it);
+  if (!reply.accepted) forget_observations(match_id);
   return reply;
 }
 
@@ -203,14 +225,33 @@ std::optional<Connection::ServerSeen> Connection::server(const std::string& serv
   return it->second;
 }
 
-void Connection::on_bundled_observations(
-    const std::string& match_id,
-    std::function<void(const olympics::observation_batch_t&)> handler) {
-  bundled_observations_[match_id] = std::move(handler);
+void Connection::on_observations(const std::string& match_id, ObservationHandler handler) {
+  listen_for_observations(match_id);  // a session made without a join of this connection's
+  auto& route = observation_routes_[match_id];
+  route.handler = std::move(handler);
+  for (auto& batch : route.held) route.handler(std::move(batch));
+  route.held.clear();
 }
 
-void Connection::forget_bundled_observations(const std::string& match_id) {
-  bundled_observations_.erase(match_id);
+void Connection::forget_observations(const std::string& match_id) {
+  auto it = observation_routes_.find(match_id);
+  if (it == observation_routes_.end()) return;
+  transport_.unsubscribe(it->second.subscription);
+  observation_routes_.erase(it);
+}
+
+double Connection::resend_interval_s() const {
+  constexpr double kMaxS = 1.0;  // a round trip longer than this is a stall, not a pace
+  return std::clamp(2 * longest_round_trip_s_, options_.resend_interval_s,
+                    std::max(kMaxS, options_.resend_interval_s));
+}
+
+void Connection::note_round_trip(double seconds) {
+  const auto now = Clock::now();
+  longest_round_trip_s_ *=
+      std::exp(-std::chrono::duration<double>(now - longest_round_trip_at_).count());
+  if (seconds >= longest_round_trip_s_) longest_round_trip_s_ = seconds;
+  longest_round_trip_at_ = now;
 }
 
 std::optional<Assignment> Connection::take_assignment(const std::string& learner) {

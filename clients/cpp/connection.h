@@ -99,7 +99,9 @@ class Connection {
   // from the queue.
   std::optional<olympics::error_t> take_request_error(const std::string& request_id);
 
-  // Joins: send (again, until answered) and collect the reply.
+  // Joins: send (again, until answered) and collect the reply. From the first join on, the
+  // match's observation batches are kept for its session (on_observations): the server sends
+  // the first one right behind the join reply, before a session can exist to take it.
   void send_join(const std::string& match_id, const std::vector<int>& slots);
   std::optional<JoinReply> take_join_reply(const std::string& match_id);
   // An error that ends any hope for this match: UNKNOWN_MATCH, STORE_FAILED (and, before the
@@ -119,11 +121,23 @@ class Connection {
   };
   std::optional<ServerSeen> server(const std::string& server_id) const;
 
-  // Observation batches of a match that come in this client's bundles (a server bundles them
-  // once the client sends its actions in bundles); one handler per match.
-  void on_bundled_observations(const std::string& match_id,
-                               std::function<void(const olympics::observation_batch_t&)> handler);
-  void forget_bundled_observations(const std::string& match_id);
+  // Observation batches of a joined match, from its own channel or from this client's bundles
+  // (a server bundles them once the client sends its actions in bundles): those that came
+  // since the join go to `handler` at once, in order, later ones as they come. One handler per
+  // match; forget_observations() when done with it.
+  using ObservationHandler = std::function<void(olympics::observation_batch_t&&)>;
+  void on_observations(const std::string& match_id, ObservationHandler handler);
+  void forget_observations(const std::string& match_id);
+
+  // How long a match session waits for the answer to its action before sending it again: the
+  // options' resend_interval_s, or twice the longest round trip of the last second where that
+  // is longer. A client stepping many matches at once gets its answers over tens of ms (a
+  // server worker steps its matches one after another); resending sooner only adds load. (A
+  // smoothed mean, as TCP keeps, fails here: the round trips of one step are spread evenly up
+  // to the last match's, and every match above the mean would be resent.)
+  double resend_interval_s() const;
+  // A round trip measured by a session: action sent (not resent) to the next observation.
+  void note_round_trip(double seconds);
 
   std::optional<Assignment> take_assignment(const std::string& learner);
   // Errors the server addressed to this client (or to its requests) since the last call.
@@ -141,9 +155,18 @@ class Connection {
   std::deque<Assignment> assignments_;  // heard, not yet handed out
   std::set<std::string> assigned_matches_;
   std::map<std::string, ServerSeen> servers_;  // by id, from their announcements
-  std::map<std::string, std::function<void(const olympics::observation_batch_t&)>>
-      bundled_observations_;                  // by match id
+  double longest_round_trip_s_ = 0;            // decays by e every second
+  Clock::time_point longest_round_trip_at_;
+  struct ObservationRoute {
+    int subscription = -1;       // the match's own channel
+    ObservationHandler handler;  // none yet: batches are held
+    std::deque<olympics::observation_batch_t> held;
+  };
+  std::map<std::string, ObservationRoute> observation_routes_;  // by match id, from the join
+  void listen_for_observations(const std::string& match_id);
+  void deliver(const std::string& match_id, olympics::observation_batch_t&& batch);
   static constexpr size_t kMaxQueued = 1000;  // errors, assignments kept until taken
+  static constexpr size_t kMaxHeld = 8;       // observation batches held for a session to come
 };
 
 std::chrono::steady_clock::duration seconds(double s);

@@ -19,15 +19,12 @@ MatchSession::MatchSession(Connection& connection, olympics::match_created_t mat
     : connection_(connection), match_(std::move(match)), slots_(std::move(slots)) {
   std::sort(slots_.begin(), slots_.end());
   connection_.watch(match_.match_id);
-  obs_subscription_ = connection_.transport().subscribe_to<olympics::observation_batch_t>(
-      match_.obs_channel,
-      [this](const std::string&, const olympics::observation_batch_t& b) { on_observation(b); });
-  connection_.on_bundled_observations(
-      match_.match_id, [this](const olympics::observation_batch_t& b) { on_observation(b); });
+  connection_.on_observations(
+      match_.match_id, [this](olympics::observation_batch_t&& b) { on_observation(std::move(b)); });
   joined_at_ = last_heartbeat_ = Clock::now();
 }
 
-void MatchSession::on_observation(const olympics::observation_batch_t& b) {
+void MatchSession::on_observation(olympics::observation_batch_t&& b) {
   if (b.client_id != connection_.client_id() || b.match_id != match_.match_id) return;
   // New: a later tick, or the same tick ending the match (a forfeit ends it between
   // ticks, so its final batch repeats the tick of the one before).
@@ -38,22 +35,23 @@ void MatchSession::on_observation(const olympics::observation_batch_t& b) {
   if (b.slots != slots_ || b.obs_size != match_.obs_size)
     return connection_.transport().count_malformed();
   if (latest_ && (latest_->tick > b.tick || (latest_->tick == b.tick && !ends))) return;
+  if (!resent_ && !last_action_bytes_.empty() && b.tick == last_action_tick_ + 1)
+    connection_.note_round_trip(std::chrono::duration<double>(Clock::now() - acted_at_).count());
   Observation o;
   o.tick = b.tick;
   o.slots = b.slots;
-  o.obs = b.obs;
-  o.reward = b.reward;
-  o.term_names = b.term_names;
-  o.terms = b.terms;
+  o.obs = std::move(b.obs);
+  o.reward = std::move(b.reward);
+  o.term_names = std::move(b.term_names);
+  o.terms = std::move(b.terms);
   o.done.assign(b.done.begin(), b.done.end());
   o.truncated.assign(b.truncated.begin(), b.truncated.end());
-  o.info = b.info;
+  o.info = std::move(b.info);
   latest_ = std::move(o);
 }
 
 MatchSession::~MatchSession() {
-  connection_.transport().unsubscribe(obs_subscription_);
-  connection_.forget_bundled_observations(match_.match_id);
+  connection_.forget_observations(match_.match_id);
   connection_.forget(match_.match_id);
 }
 
@@ -88,7 +86,10 @@ const std::vector<std::uint8_t>& MatchSession::prepare_action(
   b.action_size = actions.empty() ? 0 : static_cast<int>(actions[0].size());
   b.actions = actions;
   last_action_bytes_ = protocol::encode(b);
-  last_send_ = Clock::now();
+  last_action_tick_ = tick;
+  last_send_ = acted_at_ = Clock::now();
+  resend_gap_s_ = connection_.resend_interval_s();
+  resent_ = false;
   return last_action_bytes_;
 }
 
@@ -96,7 +97,9 @@ void MatchSession::maintain() {
   fail_if_lost();
   const auto now = Clock::now();
   const auto& options = connection_.options();
-  if (now - last_heartbeat_ >= seconds(options.heartbeat_interval_s)) {
+  // An action is heard as much as a heartbeat: one goes only when neither went for a while
+  // (a client playing many matches would otherwise send one datagram per match for nothing).
+  if (now - std::max(last_heartbeat_, last_send_) >= seconds(options.heartbeat_interval_s)) {
     olympics::heartbeat_t h;
     h.protocol_version = protocol::kProtocolVersion;
     h.match_id = match_.match_id;
@@ -108,12 +111,14 @@ void MatchSession::maintain() {
     last_heartbeat_ = now;
   }
   // Our last action may have been lost: while the next observation has not come, send it
-  // again (a server that has finished answers it with the result).
-  if (!latest_ && !last_action_bytes_.empty() &&
-      now - last_send_ >= seconds(options.resend_interval_s)) {
+  // again (a server that has finished answers it with the result), less often each time.
+  constexpr double kMaxResendGapS = 0.25;
+  if (!latest_ && !last_action_bytes_.empty() && now - last_send_ >= seconds(resend_gap_s_)) {
     connection_.transport().publish_raw(match_.action_channel, last_action_bytes_.data(),
                                         static_cast<int>(last_action_bytes_.size()));
     last_send_ = now;
+    resend_gap_s_ = std::max(resend_gap_s_, std::min(2 * resend_gap_s_, kMaxResendGapS));
+    resent_ = true;
   }
 }
 

@@ -57,19 +57,21 @@ class MatchSession {
   using Clock = Connection::Clock;
   void fail_if_lost();
   // An observation batch from the match's channel or from one of this client's bundles.
-  void on_observation(const olympics::observation_batch_t& batch);
+  void on_observation(olympics::observation_batch_t&& batch);
 
   Connection& connection_;
   olympics::match_created_t match_;
   std::vector<int> slots_;
-  int obs_subscription_ = -1;
   std::optional<Observation> latest_;
   int last_taken_tick_ = -1;
   bool last_taken_done_ = false;  // the last observation taken had every slot done
   std::optional<Clock::time_point> result_seen_at_;
   std::vector<std::uint8_t> last_action_bytes_;
+  int last_action_tick_ = -1;
   std::int64_t seq_ = 0;
-  Clock::time_point joined_at_, last_heartbeat_, last_send_;
+  Clock::time_point joined_at_, last_heartbeat_, last_send_, acted_at_;
+  double resend_gap_s_ = 0;  // doubles with every resend of the same action
+  bool resent_ = false;      // the last action went more than once: its round trip means nothing
   std::int64_t server_boot_ = 0;  // the server's boot when first heard after the join
 };
 

@@ -10,7 +10,7 @@ namespace olympics::client {
 namespace {
 constexpr double kResendS = 0.25;         // requests and joins, until answered
 constexpr double kResultWaitS = 30;       // how long an ended match is kept to hear its result
-constexpr double kMaintainEveryS = 0.05;  // heartbeats of environments not waiting
+constexpr double kMaintainEveryS = 0.02;  // heartbeats, resends, checks for lost matches
 }  // namespace
 
 struct VectorClient::Env {
@@ -72,7 +72,9 @@ void VectorClient::start_next_match(Env& env) {
 }
 
 // Moves one environment along: request answered → join; join accepted → play; observation in.
-void VectorClient::advance(Env& env) {
+// `maintain`: also heartbeats, resends and the checks for a lost match, which need not run at
+// every message that comes in (they are due every kMaintainEveryS).
+void VectorClient::advance(Env& env, bool maintain) {
   const auto now = Connection::Clock::now();
   const auto where = [&] {
     return "environment " + std::to_string(env.index) + " (request " + env.request.request_id +
@@ -133,9 +135,9 @@ void VectorClient::advance(Env& env) {
     }
   }
   if (env.phase == Env::Phase::kPlaying && !env.ready) {
-    env.session->maintain();
+    if (maintain) env.session->maintain();
     auto o = env.session->take_observation();
-    if (!o && env.last && env.session->ended_without_final_observation()) {
+    if (!o && maintain && env.last && env.session->ended_without_final_observation()) {
       // Over, and its final observation lost for good: the last one we saw, every slot done,
       // nothing earned.
       o = env.last;
@@ -177,32 +179,59 @@ void VectorClient::collect_results() {
   });
 }
 
-void VectorClient::append(VectorBatch& b, Env& env) {
+// Row `row` of a batch sized for its environments: the environment's ready observation (and,
+// when its match just ended, that match's last one with its reward and flags; zeros where
+// there is none).
+void VectorClient::fill(VectorBatch& b, size_t row, Env& env) {
   const Observation& now = *env.ready;
   // The reward and flags of an ended match are its last tick's; the observation is the next
   // match's first.
   const Observation& scored = env.final ? *env.final : now;
-  const size_t agents = slots_.size(), terms = term_names_.size();
-  b.envs.push_back(env.index);
-  b.tick.push_back(now.tick);
-  b.episode_over.push_back(env.final ? 1 : 0);
+  const size_t agents = slots_.size(), terms = term_names_.size(), obs = obs_size_;
+  b.envs[row] = env.index;
+  b.tick[row] = now.tick;
+  b.episode_over[row] = env.final ? 1 : 0;
   for (size_t a = 0; a < agents; ++a) {
-    b.obs.insert(b.obs.end(), now.obs[a].begin(), now.obs[a].end());
+    const size_t at = row * agents + a;
+    std::copy(now.obs[a].begin(), now.obs[a].end(), b.obs.begin() + at * obs);
+    const auto final_row = b.final_obs.begin() + at * obs;
     if (env.final)
-      b.final_obs.insert(b.final_obs.end(), env.final->obs[a].begin(), env.final->obs[a].end());
+      std::copy(env.final->obs[a].begin(), env.final->obs[a].end(), final_row);
     else
-      b.final_obs.insert(b.final_obs.end(), obs_size_, 0.0f);
-    b.reward.push_back(scored.reward[a]);
+      std::fill(final_row, final_row + obs, 0.0f);
+    b.reward[at] = scored.reward[a];
     for (size_t t = 0; t < terms; ++t)
-      b.terms.push_back(t < scored.terms[a].size() ? scored.terms[a][t] : 0.0f);
-    b.truncated.push_back(scored.truncated[a] ? 1 : 0);
-    b.terminated.push_back(scored.done[a] && !scored.truncated[a] ? 1 : 0);
+      b.terms[at * terms + t] = t < scored.terms[a].size() ? scored.terms[a][t] : 0.0f;
+    b.truncated[at] = scored.truncated[a] ? 1 : 0;
+    b.terminated[at] = scored.done[a] && !scored.truncated[a] ? 1 : 0;
   }
   env.tick = now.tick;
   env.last = std::move(env.ready);
   env.ready.reset();
   env.final.reset();
   env.waiting = false;
+}
+
+// Every environment whose next observation is here, as one batch. The arrays are the client's
+// own, sized anew each time but allocated once: a step of 256 sandbox matches is 1.5 MB, and
+// fresh arrays cost more in page faults and zeroing than the copying itself.
+const VectorBatch& VectorClient::take_ready() {
+  std::vector<Env*> ready;
+  for (auto& env : envs_)
+    if (env->waiting && env->ready) ready.push_back(env.get());
+  const size_t n = ready.size(), rows = n * slots_.size();
+  VectorBatch& b = batch_;
+  b.envs.resize(n);
+  b.tick.resize(n);
+  b.episode_over.resize(n);
+  b.obs.resize(rows * obs_size_);
+  b.final_obs.resize(rows * obs_size_);
+  b.reward.resize(rows);
+  b.terms.resize(rows * term_names_.size());
+  b.terminated.resize(rows);
+  b.truncated.resize(rows);
+  for (size_t i = 0; i < n; ++i) fill(b, i, *ready[i]);
+  return b;
 }
 
 void VectorClient::start() {
@@ -213,12 +242,12 @@ void VectorClient::start() {
   }
 }
 
-VectorBatch VectorClient::reset() {
+const VectorBatch& VectorClient::reset() {
   start();
   return recv(num_envs());
 }
 
-VectorBatch VectorClient::step(std::span<const float> actions) {
+const VectorBatch& VectorClient::step(std::span<const float> actions) {
   std::vector<int> all(envs_.size());
   for (size_t e = 0; e < all.size(); ++e) all[e] = static_cast<int>(e);
   send(all, actions);
@@ -261,7 +290,7 @@ void VectorClient::send(std::span<const int> envs, std::span<const float> action
   }
 }
 
-VectorBatch VectorClient::recv(int min_ready, double timeout_s) {
+const VectorBatch& VectorClient::recv(int min_ready, double timeout_s) {
   int waiting = 0;
   for (const auto& env : envs_) waiting += env->waiting ? 1 : 0;
   min_ready = std::clamp(min_ready, 0, waiting);
@@ -270,20 +299,16 @@ VectorBatch VectorClient::recv(int min_ready, double timeout_s) {
       timeout_s < 0 ? Connection::Clock::time_point::max() : next_maintenance + seconds(timeout_s);
   for (;;) {
     connection_.drain();
+    const auto now = Connection::Clock::now();
+    const bool maintain = now >= next_maintenance;
     int ready = 0;
     for (auto& env : envs_)
       if (env->waiting) {
-        advance(*env);
+        advance(*env, maintain);
         ready += env->ready ? 1 : 0;
       }
-    if (ready >= min_ready || Connection::Clock::now() >= give_up) {
-      VectorBatch batch;
-      for (auto& env : envs_)
-        if (env->waiting && env->ready) append(batch, *env);
-      return batch;
-    }
-    const auto now = Connection::Clock::now();
-    if (now >= next_maintenance) {
+    if (ready >= min_ready || Connection::Clock::now() >= give_up) return take_ready();
+    if (maintain) {
       for (auto& env : envs_)
         if (!env->waiting && env->session) env->session->maintain();
       collect_results();

@@ -66,17 +66,18 @@ class VectorClient {
   const std::vector<std::string>& term_names() const { return term_names_; }
   const std::string& client_id() const { return connection_.client_id(); }
 
+  // The batches returned are the client's own arrays, valid until its next reset, step or recv.
   // Starts every environment's first match and returns their first observations.
-  VectorBatch reset();
+  const VectorBatch& reset();
   // Async: starts every environment's first match; recv() returns them as they begin.
   void start();
   // Every environment's actions [envs][agents][action_size]; their next observations.
-  VectorBatch step(std::span<const float> actions);
+  const VectorBatch& step(std::span<const float> actions);
   // Async: actions [envs.size()][agents][action_size] for these environments.
   void send(std::span<const int> envs, std::span<const float> actions);
   // The environments whose next observation has come since their send: at least min_ready of
   // them, or (timeout_s >= 0) whatever has come when timeout_s has passed, maybe none.
-  VectorBatch recv(int min_ready, double timeout_s = -1);
+  const VectorBatch& recv(int min_ready, double timeout_s = -1);
   // Results of the matches that ended since the last call.
   std::vector<olympics::match_result_t> take_results();
   // The match an environment plays now.
@@ -85,9 +86,10 @@ class VectorClient {
  private:
   struct Env;
   void start_next_match(Env& env);
-  void advance(Env& env);
+  void advance(Env& env, bool maintain);
   void collect_results();
-  void append(VectorBatch& batch, Env& env);
+  void fill(VectorBatch& batch, size_t row, Env& env);
+  const VectorBatch& take_ready();
 
   Connection connection_;
   VectorSettings settings_;
@@ -102,6 +104,7 @@ class VectorClient {
   };
   std::deque<Ending> ending_;
   std::vector<olympics::match_result_t> results_;
+  VectorBatch batch_;  // what reset, step and recv return
 };
 
 }  // namespace olympics::client

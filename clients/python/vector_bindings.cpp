@@ -89,12 +89,12 @@ void bind_vector_client(py::module_& m) {
       .def("match_id", [](const VectorClient& c, int env) { return c.match(env).match_id; })
       .def("reset",
            [](VectorClient& c) {
-             VectorBatch b;
+             const VectorBatch* b;
              {
                py::gil_scoped_release release;
-               b = c.reset();
+               b = &c.reset();
              }
-             return batch_dict(c, b);
+             return batch_dict(c, *b);
            })
       .def("start",
            [](VectorClient& c) {
@@ -104,13 +104,13 @@ void bind_vector_client(py::module_& m) {
       .def(
           "step",
           [](VectorClient& c, Actions actions) {
-            VectorBatch b;
+            const VectorBatch* b;
             std::span<const float> flat(actions.data(), static_cast<size_t>(actions.size()));
             {
               py::gil_scoped_release release;
-              b = c.step(flat);
+              b = &c.step(flat);
             }
-            return batch_dict(c, b);
+            return batch_dict(c, *b);
           },
           py::arg("actions"))
       .def(
@@ -124,12 +124,12 @@ void bind_vector_client(py::module_& m) {
       .def(
           "recv",
           [](VectorClient& c, int min_ready, std::optional<double> timeout_s) {
-            VectorBatch b;
+            const VectorBatch* b;
             {
               py::gil_scoped_release release;
-              b = c.recv(min_ready, timeout_s.value_or(-1));
+              b = &c.recv(min_ready, timeout_s.value_or(-1));
             }
-            return batch_dict(c, b);
+            return batch_dict(c, *b);
           },
           py::arg("min_ready") = 1, py::arg("timeout_s") = py::none())
       .def("take_results", [](VectorClient& c) {
