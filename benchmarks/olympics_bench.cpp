@@ -7,7 +7,8 @@
 //   olympics-bench soccer  [--json] [--kicks N] [--matches M] [--half-s S] [--policies P,..]
 //   olympics-bench basketball [--json] [--throws N] [--policies P,..]
 //   olympics-bench soak    [--json] [--minutes M] [--matches N] [--workers W] (an hour; not CI)
-//   olympics-bench vector  [--json] [--envs N] [--workers W] [--seconds S] [--connect URL]
+//   olympics-bench vector  [--json] [--envs N] [--workers W] [--seconds S] [--async K]
+//                          [--connect URL]
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
@@ -152,6 +153,9 @@ int main(int argc, char** argv) {
   vect->add_option("--workers", vector.workers, "server worker threads (default: one per core)")
       ->check(CLI::NonNegativeNumber);
   vect->add_option("--seconds", vector.seconds, "wall seconds per measurement")
+      ->check(CLI::PositiveNumber);
+  vect->add_option("--async", vector.async_batch,
+                   "async (EnvPool's send/recv): each recv takes this many ready matches")
       ->check(CLI::PositiveNumber);
   vect->add_option("--connect", vector.connect,
                    "LCM URL of a running olympics-server to play on (default: one in process)");

@@ -90,6 +90,7 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
   protocol::Transport server_transport{protocol::TransportOptions(
       url, 0.0, 1, o.signed_messages ? protocol::load_secret(secret) : nullptr)};
   server::HostSettings settings;
+  settings.log_finished = false;  // stdout is the report's (--json)
   settings.server_id = "bench";
   settings.workers = o.workers;
   settings.capacity = o.matches * 4;
@@ -186,7 +187,7 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
     paused = true;
     std::this_thread::sleep_for(std::chrono::milliseconds(50));  // in-flight ticks drain
     if (pin) pin_this_thread(0, 0);  // the bare figure: on a worker's core
-    bare_rates.push_back(sandbox_ticks_per_second(o.matches, window));
+    bare_rates.push_back(sandbox_ticks_per_second(std::max(1, o.matches / o.workers), window));
     if (pin) pin_this_thread(o.workers, cores - 1);
     paused = false;
     ratios.push_back(served_rates.back() / bare_rates.back());

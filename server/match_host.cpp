@@ -471,9 +471,11 @@ void MatchHost::on_finished(MatchRuntime& match) {
   }
   match.publish_result();
   const auto& r = match.result();
-  std::printf("[%s] %s %s finished after %d ticks: %s, winner team %d\n", r.match_id.c_str(),
-              r.sport.c_str(), r.mode.c_str(), r.ticks, r.reason.c_str(), r.winner_team);
-  std::fflush(stdout);
+  if (settings_.log_finished) {
+    std::printf("[%s] %s %s finished after %d ticks: %s, winner team %d\n", r.match_id.c_str(),
+                r.sport.c_str(), r.mode.c_str(), r.ticks, r.reason.c_str(), r.winner_team);
+    std::fflush(stdout);
+  }
   std::lock_guard lock(routes_mutex_);
   routes_.erase(match.match_id());
   finished_[match.match_id()] = {r, match.description().obs_channel, match.final_batches()};

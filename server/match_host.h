@@ -36,6 +36,7 @@ struct HostSettings {
   bool scene_tracks = true;    // also write <match>.scene (for viewers) beside the replay
   LiveScenes* live = nullptr;  // publish every match's scene track to live viewers
   double announce_interval_s = 1.0;
+  bool log_finished = true;  // a line on stdout for every finished match (benchmarks: off)
 };
 
 class MatchHost {
