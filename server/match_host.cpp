@@ -68,10 +68,7 @@ double MatchHost::worker_cpu_seconds() const {
   return total;
 }
 
-int MatchHost::active_matches() const {
-  std::lock_guard lock(routes_mutex_);
-  return static_cast<int>(routes_.size());
-}
+int MatchHost::active_matches() const { return playing_; }
 
 void MatchHost::error(const std::string& match_id, const std::string& client_id,
                       const std::string& code, const std::string& message) {
@@ -224,7 +221,8 @@ void MatchHost::on_request(const std::uint8_t* data, int size) {
     std::lock_guard lock(routes_mutex_);
     if (auto it = requests_.find(req->request_id);
         it != requests_.end() && !req->request_id.empty()) {
-      transport_.publish(protocol::kCreated, it->second);  // a resent request: same match
+      // A resent request: the same match (none yet while its worker creates it).
+      if (!it->second.match_id.empty()) transport_.publish(protocol::kCreated, it->second);
       return;
     }
   }
@@ -260,16 +258,6 @@ void MatchHost::on_request(const std::uint8_t* data, int size) {
   id.sport = req->sport;
   id.settings = {req->mode, static_cast<std::uint64_t>(req->seed), req->time_limit_s, options};
   id.realtime = req->realtime;
-  std::unique_ptr<sports::SportMatch> game;
-  try {
-    game = sport->create(id.settings);
-    // What is in force, recorded with the match and its replay: the sport's time limit when
-    // the request left it to the sport, every setting with its default filled in.
-    id.settings.time_limit_s = game->time_limit_s();
-    id.settings.options = sports::merge_settings(sport->name(), sport->settings(), options);
-  } catch (const std::invalid_argument& e) {
-    return error("", "", "BAD_REQUEST", "request " + req->request_id + ": " + e.what());
-  }
   int worker;
   {
     std::lock_guard lock(routes_mutex_);
@@ -278,12 +266,55 @@ void MatchHost::on_request(const std::uint8_t* data, int size) {
         settings_.server_id + "-" + boot_tag_ + "-" + std::to_string(next_match_number_++);
     worker = next_worker_++ % static_cast<int>(workers_.size());
     routes_[id.match_id] = worker;
+    if (!req->request_id.empty()) {
+      requests_[req->request_id] = {};  // being created: a resend of it waits for the answer
+      request_of_match_[id.match_id] = req->request_id;
+    }
+    ++playing_;
+  }
+  // Its actions may come as soon as the client hears of it: listen before the worker answers.
+  if (exact_action_channels_) subscribe_actions(id.match_id);
+  // The world is built, noted in the store and announced by the worker that will step it, so
+  // that a wave of requests (a vector client's matches ending together) is created in parallel,
+  // not one after another on this receiving thread.
+  Worker& w = *workers_[worker];
+  {
+    std::lock_guard lock(w.mutex);
+    w.to_create.push_back({std::move(id), req->request_id, sport});
+  }
+  w.wake.notify_one();
+}
+
+// On the match's worker: the world, its runtime and recorders; the request is answered with
+// match_created_t once the match can take joins. A request the sport refuses (an unknown mode
+// or setting) is answered with BAD_REQUEST and leaves nothing behind.
+std::unique_ptr<MatchRuntime> MatchHost::create_match(PendingMatch pending) {
+  MatchIdentity& id = pending.identity;
+  std::unique_ptr<sports::SportMatch> game;
+  try {
+    game = pending.sport->create(id.settings);
+    // What is in force, recorded with the match and its replay: the sport's time limit when
+    // the request left it to the sport, every setting with its default filled in.
+    id.settings.time_limit_s = game->time_limit_s();
+    id.settings.options = sports::merge_settings(pending.sport->name(), pending.sport->settings(),
+                                                 id.settings.options);
+  } catch (const std::invalid_argument& e) {
+    {
+      std::lock_guard lock(routes_mutex_);
+      routes_.erase(id.match_id);
+      requests_.erase(pending.request_id);
+      request_of_match_.erase(id.match_id);
+      if (exact_action_channels_) to_unsubscribe_.push_back(id.match_id);
+      --playing_;
+    }
+    error("", "", "BAD_REQUEST", "request " + pending.request_id + ": " + e.what());
+    return nullptr;
   }
   std::unique_ptr<TrafficLog> log;
   if (settings_.lcm_logs && !settings_.replay_dir.empty())
     log = std::make_unique<TrafficLog>(settings_.replay_dir + "/" + id.match_id + ".lcmlog");
   auto runtime =
-      std::make_unique<MatchRuntime>(id, req->realtime ? settings_.realtime : settings_.sync,
+      std::make_unique<MatchRuntime>(id, id.realtime ? settings_.realtime : settings_.sync,
                                      std::move(game), transport_, std::move(log));
   const bool scene_file = settings_.scene_tracks && !settings_.replay_dir.empty();
   if (scene_file || settings_.live)
@@ -295,23 +326,17 @@ void MatchHost::on_request(const std::uint8_t* data, int size) {
                                                            {"seed", id.settings.seed}})
                        : nullptr));
   note_in_progress(*runtime, id);
-  olympics::match_created_t created = runtime->description();
-  created.request_id = req->request_id;
+  return runtime;
+}
+
+// The answer to a match's request, once its worker holds it.
+void MatchHost::announce_created(const MatchRuntime& match, const std::string& request_id) {
+  olympics::match_created_t created = match.description();
+  created.request_id = request_id;
   {
     std::lock_guard lock(routes_mutex_);
-    if (!req->request_id.empty()) {
-      requests_[req->request_id] = created;
-      request_of_match_[id.match_id] = req->request_id;
-    }
+    if (auto it = requests_.find(request_id); it != requests_.end()) it->second = created;
   }
-  Worker& w = *workers_[worker];
-  runtime->set_outbox(&w.outbox);
-  {
-    std::lock_guard lock(w.mutex);
-    w.entries[id.match_id].match = std::move(runtime);
-  }
-  w.wake.notify_one();
-  if (exact_action_channels_) subscribe_actions(id.match_id);
   transport_.publish(protocol::kCreated, created);
 }
 
@@ -413,12 +438,34 @@ int MatchHost::route(const std::string& match_id, const std::string& channel,
 void MatchHost::worker_loop(Worker& w) {
   using Clock = MatchRuntime::Clock;
   while (!stopping_) {
-    std::vector<std::pair<MatchRuntime*, std::deque<Inbound>>> work;
+    std::deque<PendingMatch> to_create;
     {
       std::lock_guard lock(w.mutex);
+      to_create.swap(w.to_create);
+    }
+    std::vector<std::pair<std::unique_ptr<MatchRuntime>, std::string>> created;
+    for (auto& pending : to_create) {
+      std::string request_id = pending.request_id;
+      if (auto match = create_match(std::move(pending))) {
+        match->set_outbox(&w.outbox);
+        created.emplace_back(std::move(match), std::move(request_id));
+      }
+    }
+    std::vector<std::pair<MatchRuntime*, std::deque<Inbound>>> work;
+    std::vector<std::pair<const MatchRuntime*, std::string>> to_announce;
+    {
+      std::lock_guard lock(w.mutex);
+      for (auto& [match, request_id] : created) {
+        to_announce.emplace_back(match.get(), request_id);
+        const std::string match_id = match->match_id();
+        w.entries[match_id].match = std::move(match);
+      }
       for (auto& [id, entry] : w.entries)
         work.emplace_back(entry.match.get(), std::move(entry.inbox)), entry.inbox.clear();
     }
+    // Announced once routable, so that the joins answering it find the match. (Only this
+    // thread erases entries: the pointers stay valid.)
+    for (const auto& [match, request_id] : to_announce) announce_created(*match, request_id);
     auto next = Clock::now() + std::chrono::milliseconds(100);
     std::vector<std::string> done;
     for (auto& [match, inbox] : work) {
@@ -426,6 +473,7 @@ void MatchHost::worker_loop(Worker& w) {
       if (match->take_started()) note_players(*match);
       next = std::min(next, match->poll(Clock::now()));
       if (match->finished()) {
+        --playing_;                  // its place is free before its players hear the end
         w.outbox.flush(transport_);  // its final observations before its result
         on_finished(*match);
         done.push_back(match->match_id());
@@ -435,7 +483,7 @@ void MatchHost::worker_loop(Worker& w) {
     std::unique_lock lock(w.mutex);
     for (const auto& id : done) w.entries.erase(id);
     w.wake.wait_until(lock, next, [&] {
-      if (stopping_) return true;
+      if (stopping_ || !w.to_create.empty()) return true;
       for (auto& [id, entry] : w.entries)
         if (!entry.inbox.empty()) return true;
       return false;

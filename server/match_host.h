@@ -61,11 +61,18 @@ class MatchHost {
     std::unique_ptr<MatchRuntime> match;
     std::deque<Inbound> inbox;
   };
+  // A request accepted by the receiving thread, for its worker to create.
+  struct PendingMatch {
+    MatchIdentity identity;  // its id and settings as requested
+    std::string request_id;
+    const sports::Sport* sport = nullptr;
+  };
   struct Worker {
     std::thread thread;
     std::mutex mutex;
     std::condition_variable wake;
     std::unordered_map<std::string, Entry> entries;
+    std::deque<PendingMatch> to_create;
     ObservationOutbox outbox;  // the worker thread's own
   };
 
@@ -79,6 +86,8 @@ class MatchHost {
   bool should_take_unaddressed_request();
   void announce();
   void worker_loop(Worker& worker);
+  std::unique_ptr<MatchRuntime> create_match(PendingMatch pending);
+  void announce_created(const MatchRuntime& match, const std::string& request_id);
   void on_finished(MatchRuntime& match);
   void note_in_progress(const MatchRuntime& match, const MatchIdentity& id);
   void note_players(const MatchRuntime& match);
@@ -108,6 +117,10 @@ class MatchHost {
   std::map<std::string, std::pair<std::chrono::steady_clock::time_point, int>>
       peers_;  // id -> seen, free
   std::atomic<long> finished_count_{0};
+  // Matches requested and not yet finished: what counts against the capacity. A match stops
+  // counting as soon as it ends, before its result is stored, so that its players' next
+  // requests find the place free.
+  std::atomic<int> playing_{0};
   // With LCM's multi-port provider (mpudpm://) a pattern subscription listens on every port, so
   // each match's action channel is subscribed by name while the match and its remembered end
   // last; subscriptions are made and ended on the receiving thread (run()).
