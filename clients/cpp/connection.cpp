@@ -51,7 +51,8 @@ Connection::Connection(const ClientOptions& options)
     : options_(options),
       client_id_(options.agent_name + "-" + random_id()),
       transport_({options.lcm_url, options.drop_rate, options.drop_seed,
-                  protocol::load_secret(options.secret_file)}) {
+                  protocol::load_secret(options.secret_file)}),
+      exact_observation_channels_(transport_.url().rfind("mpudpm://", 0) == 0) {
   transport_.subscribe_to<olympics::match_created_t>(
       protocol::kCreated, [this](const std::string&, const olympics::match_created_t& m) {
         if (pending_requests_.count(m.request_id)) created_[m.request_id] = m;
@@ -96,6 +97,17 @@ Connection::Connection(const ClientOptions& options)
             });
         if (!whole) transport_.count_malformed();
       });
+  // Every joined match's own observation channel: one pattern, matched once per message, where
+  // a subscription per match would have LCM match every message against each of them (a
+  // vector client joins hundreds). LCM's multi-port provider listens on every port for a
+  // pattern, so there each match's channel is subscribed by name instead.
+  if (!exact_observation_channels_)
+    transport_.subscribe(std::string(protocol::kObsPrefix) + ".*",
+                         [this](const std::string& channel, const std::uint8_t* data, int size) {
+                           on_observation_message(
+                               channel.substr(std::string(protocol::kObsPrefix).size()), data,
+                               size);
+                         });
   transport_.subscribe_to<olympics::server_announce_t>(
       protocol::kAnnounce, [this](const std::string&, const olympics::server_announce_t& a) {
         if (servers_.size() < kMaxQueued || servers_.count(a.server_id))
@@ -169,14 +181,22 @@ void Connection::send_join(const std::string& match_id, const std::vector<int>& 
 
 void Connection::listen_for_observations(const std::string& match_id) {
   if (observation_routes_.count(match_id)) return;  // a join sent again
-  observation_routes_[match_id].subscription = transport_.subscribe(
+  auto& route = observation_routes_[match_id];
+  if (!exact_observation_channels_) return;  // the pattern subscription hears it
+  route.subscription = transport_.subscribe(
       protocol::obs_channel(match_id),
       [this, match_id](const std::string&, const std::uint8_t* data, int size) {
-        if (auto batch = protocol::decode<olympics::observation_batch_t>(data, size))
-          deliver(match_id, std::move(*batch));
-        else
-          transport_.count_malformed();
+        on_observation_message(match_id, data, size);
       });
+}
+
+void Connection::on_observation_message(const std::string& match_id, const std::uint8_t* data,
+                                        int size) {
+  if (!observation_routes_.count(match_id)) return;  // not ours, or a match already left
+  if (auto batch = protocol::decode<olympics::observation_batch_t>(data, size))
+    deliver(match_id, std::move(*batch));
+  else
+    transport_.count_malformed();
 }
 
 void Connection::deliver(const std::string& match_id, olympics::observation_batch_t&& batch) {
@@ -236,7 +256,7 @@ void Connection::on_observations(const std::string& match_id, ObservationHandler
 void Connection::forget_observations(const std::string& match_id) {
   auto it = observation_routes_.find(match_id);
   if (it == observation_routes_.end()) return;
-  transport_.unsubscribe(it->second.subscription);
+  if (it->second.subscription >= 0) transport_.unsubscribe(it->second.subscription);
   observation_routes_.erase(it);
 }
 

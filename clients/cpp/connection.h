@@ -164,6 +164,9 @@ class Connection {
   };
   std::map<std::string, ObservationRoute> observation_routes_;  // by match id, from the join
   void listen_for_observations(const std::string& match_id);
+  void on_observation_message(const std::string& match_id, const std::uint8_t* data, int size);
+  // LCM's multi-port provider (mpudpm://): a subscription per match's channel, not a pattern.
+  const bool exact_observation_channels_;
   void deliver(const std::string& match_id, olympics::observation_batch_t&& batch);
   static constexpr size_t kMaxQueued = 1000;  // errors, assignments kept until taken
   static constexpr size_t kMaxHeld = 8;       // observation batches held for a session to come

@@ -74,8 +74,12 @@ void VectorClient::start_next_match(Env& env) {
 // Moves one environment along: request answered → join; join accepted → play; observation in.
 // `maintain`: also heartbeats, resends and the checks for a lost match, which need not run at
 // every message that comes in (they are due every kMaintainEveryS).
-void VectorClient::advance(Env& env, bool maintain) {
-  const auto now = Connection::Clock::now();
+void VectorClient::advance(Env& env, Connection::Clock::time_point now, bool maintain) {
+  // The common case, cheaply: a match under way with nothing new (recv calls this for every
+  // waiting environment at every message that comes in).
+  if (env.phase == Env::Phase::kPlaying && !maintain &&
+      (env.ready || !env.session->has_observation()))
+    return;
   const auto where = [&] {
     return "environment " + std::to_string(env.index) + " (request " + env.request.request_id +
            "): ";
@@ -304,7 +308,7 @@ const VectorBatch& VectorClient::recv(int min_ready, double timeout_s) {
     int ready = 0;
     for (auto& env : envs_)
       if (env->waiting) {
-        advance(*env, maintain);
+        advance(*env, now, maintain);
         ready += env->ready ? 1 : 0;
       }
     if (ready >= min_ready || Connection::Clock::now() >= give_up) return take_ready();

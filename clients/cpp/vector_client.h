@@ -86,7 +86,7 @@ class VectorClient {
  private:
   struct Env;
   void start_next_match(Env& env);
-  void advance(Env& env, bool maintain);
+  void advance(Env& env, Connection::Clock::time_point now, bool maintain);
   void collect_results();
   void fill(VectorBatch& batch, size_t row, Env& env);
   const VectorBatch& take_ready();
