@@ -54,6 +54,7 @@ MatchHost::~MatchHost() {
     w->wake.notify_all();
     w->thread.join();
   }
+  writes_.drain();  // what finished last is stored before the workers' matches go
 }
 
 double MatchHost::worker_cpu_seconds() const {
@@ -357,12 +358,14 @@ void MatchHost::note_in_progress(const MatchRuntime& runtime, const MatchIdentit
                            std::chrono::system_clock::now().time_since_epoch())
                            .count();
   m.participants = runtime.participants();
-  try {
-    store_.note_in_progress(m);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "[%s] could not note the match as in progress: %s\n", id.match_id.c_str(),
-                 e.what());
-  }
+  writes_.post([this, m] {
+    try {
+      store_.note_in_progress(m);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "[%s] could not note the match as in progress: %s\n", m.match_id.c_str(),
+                   e.what());
+    }
+  });
 }
 
 // Who sent a routed message: the client id its join or heartbeat carried, or an action batch's.
@@ -439,10 +442,13 @@ void MatchHost::worker_loop(Worker& w) {
   using Clock = MatchRuntime::Clock;
   while (!stopping_) {
     std::deque<PendingMatch> to_create;
+    std::vector<std::shared_ptr<MatchRuntime>> retired;
     {
       std::lock_guard lock(w.mutex);
       to_create.swap(w.to_create);
+      retired.swap(w.retired);
     }
+    retired.clear();  // matches whose results are stored: their worlds end on their own thread
     std::vector<std::pair<std::unique_ptr<MatchRuntime>, std::string>> created;
     for (auto& pending : to_create) {
       std::string request_id = pending.request_id;
@@ -473,15 +479,18 @@ void MatchHost::worker_loop(Worker& w) {
       if (match->take_started()) note_players(*match);
       next = std::min(next, match->poll(Clock::now()));
       if (match->finished()) {
-        --playing_;                  // its place is free before its players hear the end
-        w.outbox.flush(transport_);  // its final observations before its result
-        on_finished(*match);
+        --playing_;  // its place is free before its players hear the end
         done.push_back(match->match_id());
       }
     }
+    // Final observations go out before the results, which the write queue publishes once stored.
     w.outbox.flush(transport_);  // one bundle per bundling client for this whole pass
     std::unique_lock lock(w.mutex);
-    for (const auto& id : done) w.entries.erase(id);
+    for (const auto& id : done) {
+      auto entry = w.entries.find(id);
+      retire(w, std::move(entry->second.match));
+      w.entries.erase(entry);
+    }
     w.wake.wait_until(lock, next, [&] {
       if (stopping_ || !w.to_create.empty()) return true;
       for (auto& [id, entry] : w.entries)
@@ -492,12 +501,24 @@ void MatchHost::worker_loop(Worker& w) {
 }
 
 void MatchHost::note_players(const MatchRuntime& match) {
-  try {
-    store_.note_players(match.match_id(), match.participants());
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "[%s] could not note the players: %s\n", match.match_id().c_str(),
-                 e.what());
-  }
+  writes_.post([this, id = match.match_id(), players = match.participants()] {
+    try {
+      store_.note_players(id, players);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "[%s] could not note the players: %s\n", id.c_str(), e.what());
+    }
+  });
+}
+
+// A finished match leaves its worker: its result is stored, its replay written and its result
+// published on the write queue, then it goes back to its worker to be destroyed there (its
+// ODE world was made on that thread).
+void MatchHost::retire(Worker& w, std::unique_ptr<MatchRuntime> finished) {
+  writes_.post([this, &w, match = std::shared_ptr<MatchRuntime>(std::move(finished))]() mutable {
+    on_finished(*match);
+    std::lock_guard lock(w.mutex);
+    w.retired.push_back(std::move(match));
+  });
 }
 
 void MatchHost::on_finished(MatchRuntime& match) {

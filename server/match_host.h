@@ -22,6 +22,7 @@
 #include "olympics/server_announce_t.hpp"
 #include "results_store.h"
 #include "transport.h"
+#include "write_queue.h"
 
 namespace olympics::server {
 
@@ -73,7 +74,8 @@ class MatchHost {
     std::condition_variable wake;
     std::unordered_map<std::string, Entry> entries;
     std::deque<PendingMatch> to_create;
-    ObservationOutbox outbox;  // the worker thread's own
+    std::vector<std::shared_ptr<MatchRuntime>> retired;  // stored: to destroy on this thread
+    ObservationOutbox outbox;                            // the worker thread's own
   };
 
   void on_request(const std::uint8_t* data, int size);
@@ -89,6 +91,7 @@ class MatchHost {
   std::unique_ptr<MatchRuntime> create_match(PendingMatch pending);
   void announce_created(const MatchRuntime& match, const std::string& request_id);
   void on_finished(MatchRuntime& match);
+  void retire(Worker& worker, std::unique_ptr<MatchRuntime> finished);
   void note_in_progress(const MatchRuntime& match, const MatchIdentity& id);
   void note_players(const MatchRuntime& match);
   void error(const std::string& match_id, const std::string& client_id, const std::string& code,
@@ -132,6 +135,9 @@ class MatchHost {
   const std::string boot_tag_;  // the same in ms, base 36: in match ids
   long next_match_number_ = 1;
   int next_worker_ = 0;
+  // The results store's and replays' writes, in order, off the workers. Last: its destructor
+  // runs what is left, which needs everything above.
+  WriteQueue writes_;
 };
 
 }  // namespace olympics::server

@@ -495,7 +495,12 @@ void MatchRuntime::finish(Clock::time_point now) {
   // the result can read it from the store.
 }
 
-void MatchRuntime::publish_result() { send(protocol::kResult, result_); }
+void MatchRuntime::publish_result() {
+  // Whoever hears the result may read the match's LCM log at once: it is whole on disk first.
+  const auto buf = protocol::encode(result_);
+  if (log_) log_->write(protocol::kResult, buf.data(), static_cast<int>(buf.size())), log_->flush();
+  transport_.publish_raw(protocol::kResult, buf.data(), static_cast<int>(buf.size()));
+}
 
 std::vector<StoredParticipant> MatchRuntime::participants() const {
   std::vector<StoredParticipant> out;

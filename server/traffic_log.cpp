@@ -1,5 +1,6 @@
 #include "traffic_log.h"
 
+#include <cstdio>
 #include <stdexcept>
 
 namespace olympics::server {
@@ -20,5 +21,7 @@ void TrafficLog::write(const std::string& channel, const std::uint8_t* data, int
   event.data = const_cast<std::uint8_t*>(data);
   file_->writeEvent(&event);
 }
+
+void TrafficLog::flush() { std::fflush(file_->getFilePtr()); }
 
 }  // namespace olympics::server

@@ -14,6 +14,8 @@ class TrafficLog {
   // Throws std::runtime_error when the file cannot be created.
   explicit TrafficLog(const std::string& path);
   void write(const std::string& channel, const std::uint8_t* data, int size);
+  // What was written is in the file (for readers while the log is still open).
+  void flush();
   const std::string& path() const { return path_; }
 
  private:
