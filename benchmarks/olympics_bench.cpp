@@ -2,6 +2,7 @@
 //
 //   olympics-bench physics [--json] [--seconds S] [--repeats R] [--threads T] [--no-mujoco]
 //   olympics-bench server  [--json] [--seconds S] [--matches M] [--workers W] [--vector]
+//                          [--async K]
 //   olympics-bench racket  [--json] [--episodes N] [--seconds S] [--repeats R]
 //   olympics-bench combat  [--json] [--bouts N] [--seconds S] [--repeats R]
 //   olympics-bench soccer  [--json] [--kicks N] [--matches M] [--half-s S] [--policies P,..]
@@ -53,6 +54,10 @@ int main(int argc, char** argv) {
                  "with a deployment secret: every message signed and checked");
   serv->add_flag("--vector", server.vector_client,
                  "one vector client plays every match (bundled traffic), not one client each");
+  serv->add_option("--async", server.async_batch,
+                   "with --vector: async (EnvPool's send/recv), each recv taking this many ready "
+                   "matches")
+      ->check(CLI::PositiveNumber);
   serv->add_option("--live-viewers", server.live_viewers,
                    "this many HTTP clients watch the matches live (the viewer's cost)")
       ->check(CLI::NonNegativeNumber);

@@ -17,6 +17,7 @@ struct ServerBenchOptions {
   // One vector client plays every match (its traffic in bundles, docs/protocol.md) instead of
   // one client per match.
   bool vector_client = false;
+  int async_batch = 0;  // with vector_client: async, each recv taking this many ready matches
 };
 
 nlohmann::json run_server_bench(const ServerBenchOptions& options);

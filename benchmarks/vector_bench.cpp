@@ -12,6 +12,7 @@
 #include "match_host.h"
 #include "results_store.h"
 #include "vector_client.h"
+#include "zero_vector_play.h"
 
 namespace olympics::bench {
 namespace {
@@ -26,25 +27,13 @@ double bare_ticks_all_cores(int cores, int matches_per_core, double seconds) {
                           [&](int) { return sandbox_ticks_per_second(matches_per_core, seconds); });
 }
 
-// Agent-steps per second of one vector client, zero actions, for `seconds`: sync steps of
-// every match, or (async_batch > 0) recv of the first async_batch ready and send of theirs.
-// Async, every match has its actions out between measurements (primed after reset).
-double vector_agent_steps(client::VectorClient& c, double seconds, int async_batch) {
-  std::vector<float> zero(static_cast<size_t>(c.num_envs()) * c.num_agents() * c.action_size());
+// Agent-steps per second of one vector client playing zero actions, for `seconds`.
+double vector_agent_steps(ZeroVectorPlay& play, double seconds) {
   long steps = 0;
   const auto start = Clock::now();
   double elapsed = 0;
   while (elapsed < seconds) {
-    if (async_batch > 0) {
-      const auto& ready = c.recv(async_batch);
-      const std::vector<int> envs = ready.envs;
-      c.send(envs, std::span<const float>(zero).first(envs.size() * c.num_agents() *
-                                                      static_cast<size_t>(c.action_size())));
-      steps += static_cast<long>(envs.size()) * c.num_agents();
-    } else {
-      c.step(zero);
-      steps += c.num_envs() * c.num_agents();
-    }
+    steps += play.round() * kAgents;
     elapsed = std::chrono::duration<double>(Clock::now() - start).count();
   }
   return steps / elapsed;
@@ -86,17 +75,13 @@ nlohmann::json run_vector_bench(const VectorBenchOptions& o) {
   vs.request.mode = "1v1";
   vs.request.time_limit_s = 20;
   client::VectorClient c(co, vs);
-  const std::vector<int> first = c.reset().envs;  // every match's first observation
-  if (o.async_batch > 0) {                        // async: and its first actions, now
-    const std::vector<float> zero(first.size() * kAgents * c.action_size());
-    c.send(first, zero);
-  }
-  vector_agent_steps(c, 0.5, o.async_batch);  // every match under way
+  ZeroVectorPlay play(c, o.async_batch);
+  vector_agent_steps(play, 0.5);  // every match under way
   // Served and bare windows alternate so the machine's noise hits both alike.
   constexpr int kRounds = 5;
   std::vector<double> served, bare, ratios;
   for (int round = 0; round < kRounds; ++round) {
-    served.push_back(vector_agent_steps(c, o.seconds / kRounds, o.async_batch));
+    served.push_back(vector_agent_steps(play, o.seconds / kRounds));
     bare.push_back(bare_ticks_all_cores(cores, std::max(1, o.envs / cores), o.seconds / kRounds) *
                    kAgents);
     ratios.push_back(served.back() / bare.back());
