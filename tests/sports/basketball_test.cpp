@@ -192,8 +192,10 @@ TEST(BasketballFreeThrow, TheBallIsPresentedStillBetweenTheHandsAtTheStart) {
 }
 
 // The hold: the SMPL-X humanoid's arms forward, palms facing (shoulders turned 100 degrees in,
-// forearms rolled 90), the ball placed between the palms, then the shoulders turned `squeeze`
-// degrees further so that the palms press on it; after `hold_s` the arms open back to the T-pose.
+// forearms rolled 90), the fingers closed by their PD targets (every finger and thumb segment
+// bent `fingers_closed` rad towards the palm about its x hinge), the ball placed between the
+// palms, then the shoulders turned `squeeze` degrees further so that the palms press on it;
+// after `hold_s` the hands open: arms back to the T-pose, fingers straight.
 // Fixed: the pelvis is fixed to the world, so that the grip alone is measured. Standing: nothing
 // holds the player up but its legs, driven by StandingBalance (standing_balance.h), which also
 // bears the ball's weight once it is held.
@@ -205,7 +207,8 @@ struct Grip {
   double lowest_pelvis = 1e9, pelvis_travel = 0;  // m, from the ball's placing to the end
 };
 
-Grip hold(double squeeze_deg, double hold_s, Stance stance = Stance::Fixed) {
+Grip hold(double squeeze_deg, double hold_s, Stance stance = Stance::Fixed,
+          double fingers_closed = 0.3) {
   const core::ModelSpec spec = core::load_humanoid(core::HumanoidKind::SmplX);
   core::HumanoidScene scene;
   scene.add_humanoid(spec, {});
@@ -218,6 +221,8 @@ Grip hold(double squeeze_deg, double hold_s, Stance stance = Stance::Fixed) {
   StandingBalance balance(h);
   constexpr int kLShoulder = 15, kLElbow = 16, kLWrist = 17, kRShoulder = 34, kRElbow = 35,
                 kRWrist = 36;
+  // L_Index1 .. L_Thumb3; the right hand's fingers are the same bodies 19 further on.
+  constexpr int kLFirstFinger = 18, kLLastFinger = 32, kLeftToRight = kRWrist - kLWrist;
   std::vector<double> targets(h.dof_count(), 0.0);
   const auto joint = [&](int body, int axis) -> double& { return targets[3 * (body - 1) + axis]; };
   double shoulders_deg = 100;
@@ -226,6 +231,8 @@ Grip hold(double squeeze_deg, double hold_s, Stance stance = Stance::Fixed) {
     std::fill(targets.begin(), targets.end(), 0.0);
     joint(kLShoulder, 2) = -shoulders_deg * d, joint(kRShoulder, 2) = shoulders_deg * d;
     if (shoulders_deg > 0) joint(kLElbow, 1) = -90 * d, joint(kRElbow, 1) = 90 * d;
+    for (int finger = kLFirstFinger; shoulders_deg > 0 && finger <= kLLastFinger; ++finger)
+      joint(finger, 0) = -fingers_closed, joint(finger + kLeftToRight, 0) = fingers_closed;
     if (stance == Stance::Standing) balance.write_leg_targets(targets);
     h.set_joint_targets(targets);
   };
@@ -266,10 +273,10 @@ Grip hold(double squeeze_deg, double hold_s, Stance stance = Stance::Fixed) {
   return g;
 }
 
-TEST(BasketballGrip, PressedPalmsHoldTheBallByFrictionForThreeSecondsAndOpenHandsLetGo) {
+TEST(BasketballGrip, PressedPalmsAndClosedFingersHoldTheBallThreeSecondsAndOpenHandsLetGo) {
   const Grip g = hold(5, 3.0);
   EXPECT_LT(g.max_slip, 0.05) << "the ball stayed between the palms";
-  EXPECT_GT(g.after_release, 0.3) << "opening the arms let it fall";
+  EXPECT_GT(g.after_release, 0.3) << "opening the hands let it fall";
 }
 
 TEST(BasketballGrip, WithoutPressingThePalmsTheBallFalls) {
@@ -278,14 +285,24 @@ TEST(BasketballGrip, WithoutPressingThePalmsTheBallFalls) {
   EXPECT_GT(g.max_slip, 0.3);
 }
 
-TEST(BasketballGrip, AStandingPlayerHoldsTheBallForThreeSecondsAndOpenHandsLetGo) {
-  // Standing, the body sways and the ball rolls a little between the palms, but stays within
-  // 10 cm of their midpoint (its radius is 12 cm) until the arms open, and then falls.
+TEST(BasketballGrip, AStandingPlayerHoldsTheBallThreeSecondsAndOpenHandsLetGo) {
+  // Standing, the body sways and the ball rolls a little in the hands (2.7 cm measured; its
+  // radius is 12 cm) until they open, and then it falls.
   const Grip g = hold(5, 3.0, Stance::Standing);
   EXPECT_GT(g.lowest_pelvis, 0.85) << "the player stood (pelvis 0.93 m standing)";
   EXPECT_LT(g.pelvis_travel, 0.2) << "in place";
-  EXPECT_LT(g.max_slip, 0.1) << "the ball stayed between the palms";
-  EXPECT_GT(g.after_release, 0.3) << "opening the arms let it fall";
+  EXPECT_LT(g.max_slip, 0.05) << "the ball stayed in the hands";
+  EXPECT_GT(g.after_release, 0.3) << "opening the hands let it fall";
+}
+
+TEST(BasketballGrip, StandingClosedFingersHoldTheBallCloserThanOpenOnes) {
+  // The fingers do their part: with them straight the ball rolls 7 cm between the palms.
+  const Grip closed = hold(5, 3.0, Stance::Standing), open = hold(5, 3.0, Stance::Standing, 0);
+  std::printf(
+      "standing, ball's largest distance from the palms' midpoint: fingers closed %.3f m, "
+      "open %.3f m\n",
+      closed.max_slip, open.max_slip);
+  EXPECT_LT(closed.max_slip, 0.6 * open.max_slip);
 }
 
 TEST(BasketballGrip, AStandingPlayerWithoutPressingThePalmsDropsTheBall) {
