@@ -6,6 +6,7 @@
 #include <atomic>
 #include <thread>
 
+#include "background_listener.h"
 #include "channels.h"
 #include "olympics/error_t.hpp"
 #include "server_fixture.h"
@@ -19,34 +20,26 @@ namespace {
 // Counts the datagrams on each kind of channel, from its own thread, until destroyed.
 class TrafficCounter {
  public:
-  explicit TrafficCounter(const std::string& url) : transport_(protocol::TransportOptions(url)) {
+  explicit TrafficCounter(const std::string& url) : listener_(url) {
     count(std::string(protocol::kObsPrefix) + ".*", match_observations);
     count(std::string(protocol::kActPrefix) + ".*", match_actions);
     count(std::string(protocol::kObsBundlePrefix) + ".*", observation_bundles);
     count(std::string(protocol::kActionBundlePrefix) + ".*", action_bundles);
-    transport_.subscribe_to<olympics::error_t>(
+    listener_.transport().subscribe_to<olympics::error_t>(
         protocol::kError, [this](const std::string&, const olympics::error_t& e) {
           if (e.code == "MALFORMED") ++malformed_errors;
         });
-    thread_ = std::thread([this] {
-      while (!stop_) transport_.handle(20);
-    });
-  }
-  ~TrafficCounter() {
-    stop_ = true;
-    thread_.join();
+    listener_.listen();
   }
   std::atomic<long> match_observations{0}, match_actions{0}, observation_bundles{0},
       action_bundles{0}, malformed_errors{0};
 
  private:
   void count(const std::string& pattern, std::atomic<long>& counter) {
-    transport_.subscribe(pattern,
-                         [&counter](const std::string&, const std::uint8_t*, int) { ++counter; });
+    listener_.transport().subscribe(
+        pattern, [&counter](const std::string&, const std::uint8_t*, int) { ++counter; });
   }
-  protocol::Transport transport_;
-  std::atomic<bool> stop_{false};
-  std::thread thread_;
+  BackgroundListener listener_;  // last: its thread stops before the counters go
 };
 
 std::unique_ptr<client::VectorClient> sandbox_client(const std::string& url, int envs) {

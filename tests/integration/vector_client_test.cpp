@@ -5,36 +5,28 @@
 #include <atomic>
 #include <thread>
 
+#include "background_listener.h"
 #include "channels.h"
 #include "olympics/error_t.hpp"
 #include "server_fixture.h"
-#include "transport.h"
 
 namespace olympics::testing {
 namespace {
 
-// The errors the server sends, by code, heard from a thread of its own until destroyed.
-class ErrorListener {
+// The FULL refusals the server sends.
+class FullRefusals {
  public:
-  explicit ErrorListener(const std::string& url) : transport_(protocol::TransportOptions(url)) {
-    transport_.subscribe_to<olympics::error_t>(
+  explicit FullRefusals(const std::string& url) : listener_(url) {
+    listener_.transport().subscribe_to<olympics::error_t>(
         protocol::kError, [this](const std::string&, const olympics::error_t& e) {
-          if (e.code == "FULL") ++full;
+          if (e.code == "FULL") ++count;
         });
-    thread_ = std::thread([this] {
-      while (!stop_) transport_.handle(20);
-    });
+    listener_.listen();
   }
-  ~ErrorListener() {
-    stop_ = true;
-    thread_.join();
-  }
-  std::atomic<long> full{0};
+  std::atomic<long> count{0};
 
  private:
-  protocol::Transport transport_;
-  std::atomic<bool> stop_{false};
-  std::thread thread_;
+  BackgroundListener listener_;  // last: its thread stops before the count goes
 };
 
 // Every environment asks for its next match the moment its match's final observation comes,
@@ -44,7 +36,7 @@ class ErrorListener {
 TEST(VectorClient, AsManyEnvironmentsAsTheServerHoldsReplaceEndedMatchesWithoutARefusal) {
   constexpr int kCapacity = 6;
   ServerFixture server({"--capacity", std::to_string(kCapacity), "--workers", "2"});
-  ErrorListener errors(server.url());
+  FullRefusals refusals(server.url());
   client::ClientOptions options;
   options.lcm_url = server.url();
   client::VectorSettings settings;
@@ -62,7 +54,7 @@ TEST(VectorClient, AsManyEnvironmentsAsTheServerHoldsReplaceEndedMatchesWithoutA
     for (auto over : batch.episode_over) replaced += over;
   }
   std::this_thread::sleep_for(std::chrono::milliseconds(100));  // any late refusal lands
-  EXPECT_EQ(errors.full.load(), 0) << "a replacement was refused although its match had ended";
+  EXPECT_EQ(refusals.count.load(), 0) << "a replacement was refused although its match had ended";
 }
 
 }  // namespace
