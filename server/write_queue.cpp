@@ -17,15 +17,8 @@ void WriteQueue::post(std::function<void()> job) {
   {
     std::lock_guard lock(mutex_);
     jobs_.push_back(std::move(job));
-    ++posted_;
   }
   changed_.notify_all();
-}
-
-void WriteQueue::drain() {
-  std::unique_lock lock(mutex_);
-  const long target = posted_;
-  changed_.wait(lock, [&] { return done_ >= target; });
 }
 
 void WriteQueue::run() {
@@ -38,8 +31,6 @@ void WriteQueue::run() {
     lock.unlock();
     job();
     lock.lock();
-    ++done_;
-    changed_.notify_all();
   }
 }
 

@@ -21,8 +21,6 @@ class WriteQueue {
   WriteQueue& operator=(const WriteQueue&) = delete;
 
   void post(std::function<void()> job);
-  // Returns once everything posted before the call has run.
-  void drain();
 
  private:
   void run();
@@ -30,7 +28,6 @@ class WriteQueue {
   std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<std::function<void()>> jobs_;
-  long posted_ = 0, done_ = 0;
   bool stopping_ = false;
   std::thread thread_;  // last: it starts once the rest is ready
 };

@@ -89,11 +89,7 @@ Connection::Connection(const ClientOptions& options)
         if (bundle.client_id != client_id_) return;
         const bool whole = protocol::for_each_part(
             bundle, [&](const std::string& match_id, const std::uint8_t* data, int size) {
-              if (!observation_routes_.count(match_id)) return;  // a match already left
-              if (auto batch = protocol::decode<olympics::observation_batch_t>(data, size))
-                deliver(match_id, std::move(*batch));
-              else
-                transport_.count_malformed();
+              on_observation_message(match_id, data, size);
             });
         if (!whole) transport_.count_malformed();
       });
