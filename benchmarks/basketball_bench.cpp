@@ -9,12 +9,13 @@
 namespace olympics::bench {
 namespace {
 
-nlohmann::json free_throws(const std::string& policy, int throws) {
+nlohmann::json free_throws(const std::string& policy, int throws,
+                           const nlohmann::json& options = nlohmann::json::object()) {
   int made = 0;
   std::map<std::string, int> endings;
   for (int k = 1; k <= throws; ++k) {
-    const auto match =
-        play_in_process("basketball", {"free_throw", static_cast<std::uint64_t>(k)}, {policy});
+    const auto match = play_in_process(
+        "basketball", {"free_throw", static_cast<std::uint64_t>(k), 0.0, options}, {policy});
     made += match->outcome().reason == "basket";
     ++endings[match->outcome().reason];
   }
@@ -26,6 +27,10 @@ nlohmann::json free_throws(const std::string& policy, int throws) {
 nlohmann::json run_basketball_bench(const BasketballBenchOptions& o) {
   nlohmann::json report = {{"free_throw", nlohmann::json::object()}};
   for (const auto& p : o.policies) report["free_throw"][p] = free_throws(p, o.throws);
+  // The scripted shooter aims by the ballistic solution: from nearer lines too.
+  for (double d : o.scripted_distances)
+    report["scripted_by_distance"][std::to_string(d).substr(0, 3)] =
+        free_throws("scripted", o.throws, {{"free_throw_distance", d}});
   if (o.speed) {
     static const core::ModelSpec smplx = core::load_humanoid(core::HumanoidKind::SmplX);
     for (const char* mode : {"1v1", "2v2"})
@@ -39,6 +44,10 @@ void print_basketball_report(const nlohmann::json& r) {
   for (const auto& [policy, f] : r["free_throw"].items())
     std::printf("free throw, %-9s %d throws: made %.0f%%; endings %s\n", policy.c_str(),
                 f["throws"].get<int>(), 100 * f["made"].get<double>(), f["endings"].dump().c_str());
+  if (r.contains("scripted_by_distance"))
+    for (const auto& [d, f] : r["scripted_by_distance"].items())
+      std::printf("free throw, scripted from %s m (the rule's line: 4.6 m), %d throws: made %.0f%%\n",
+                  d.c_str(), f["throws"].get<int>(), 100 * f["made"].get<double>());
   for (const char* mode : {"1v1", "2v2"}) {
     const std::string key = "speed_" + std::string(mode);
     if (!r.contains(key)) continue;

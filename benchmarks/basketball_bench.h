@@ -1,5 +1,6 @@
 // Basketball figures, the yardsticks learned players must beat: free throws with fixed seeds
-// (1..N) by policy (the fraction made, how they ended), and ticks/s of 1v1 and 2v2 (two and four
+// (1..N) by policy (the fraction made, how they ended), the scripted shooter's from nearer
+// lines (it aims by the ballistic solution), and ticks/s of 1v1 and 2v2 (two and four
 // SMPL-X humanoids, the court and the ball) against the bare physics of as many SMPL-X
 // humanoids, measured interleaved.
 #pragma once
@@ -13,7 +14,8 @@ namespace olympics::bench {
 struct BasketballBenchOptions {
   int throws = 100;  // free throws per policy (seeds 1..N)
   std::vector<std::string> policies = {"scripted", "zero", "random"};
-  double seconds = 2;  // wall seconds per speed measurement
+  std::vector<double> scripted_distances = {3.6, 4.0, 4.3};  // free-throw lines nearer than 4.6 m
+  double seconds = 2;                                        // wall seconds per speed measurement
   int repeats = 3;
   bool speed = true;
 };

@@ -6,7 +6,7 @@
 //   olympics-bench racket  [--json] [--episodes N] [--seconds S] [--repeats R]
 //   olympics-bench combat  [--json] [--bouts N] [--seconds S] [--repeats R]
 //   olympics-bench soccer  [--json] [--kicks N] [--matches M] [--half-s S] [--policies P,..]
-//   olympics-bench basketball [--json] [--throws N] [--policies P,..]
+//   olympics-bench basketball [--json] [--throws N] [--policies P,..] [--distances D,..]
 //   olympics-bench soak    [--json] [--minutes M] [--matches N] [--workers W] (an hour; not CI)
 //   olympics-bench vector  [--json] [--envs N] [--workers W] [--seconds S] [--async K]
 //                          [--connect URL]
@@ -102,6 +102,9 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   bask->add_option("--policies", basketball.policies,
                    "free-throw shooters: scripted, zero, random, mlp:FILE (comma-separated)")
+      ->delimiter(',');
+  bask->add_option("--distances", basketball.scripted_distances,
+                   "free-throw lines (m from the board) the scripted shooter also shoots from")
       ->delimiter(',');
   bask->add_flag("--no-speed{false}", basketball.speed, "skip the ticks/s measurements");
   bask->add_option("--seconds", basketball.seconds, "wall seconds per speed measurement")

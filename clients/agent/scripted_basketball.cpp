@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "ball_aim.h"
 #include "smplx_observation.h"
 
 namespace olympics::client {
@@ -60,7 +61,43 @@ void stand(std::span<const float> o, std::span<float> a, const FreeThrowShot& s)
   for (int hip : {kLHip, kRHip}) set_joint(a, hip, 1, s.hip_p * dx);
 }
 
+// The swing whose ball leaves at `speed`, interpolated in the measured responses (ordered by
+// speed); beyond their ends, the end.
+SwingResponse swing_for_speed(const std::vector<SwingResponse>& swing, double speed) {
+  if (speed <= swing.front().speed) return swing.front();
+  for (size_t i = 1; i < swing.size(); ++i) {
+    const SwingResponse &a = swing[i - 1], &b = swing[i];
+    if (speed > b.speed) continue;
+    const double s = (speed - a.speed) / (b.speed - a.speed);
+    auto mix = [s](double x, double y) { return x + s * (y - x); };
+    return {mix(a.elevation, b.elevation), speed, mix(a.ahead, b.ahead), mix(a.up, b.up)};
+  }
+  return swing.back();
+}
+
+// The basketball's drag (SPORTS.md: r 0.12 m, 0.60 kg, Cd 0.5).
+const double kBallDrag = drag_per_mass(0.12, 0.60, 0.5);
+
 }  // namespace
+
+// The release point depends a little on the swing, the swing on the speed, the speed on the
+// release point: a few rounds of that settle it.
+FreeThrowAim ScriptedBasketballPolicy::aim_for(std::span<const float> o) const {
+  const Eigen::Vector3d ball = vec3(o, ball_), rim = vec3(o, rim_);
+  const Eigen::Vector3d towards =
+      Eigen::Vector3d(rim.x() - ball.x(), rim.y() - ball.y(), 0).normalized();
+  FreeThrowAim aim;
+  SwingResponse swing = shot_.swing.back();
+  for (int round = 0; round < 4; ++round) {
+    const Eigen::Vector3d release = ball + swing.ahead * towards + Eigen::Vector3d(0, 0, swing.up);
+    aim.carry = (rim - release).head<2>().norm();
+    aim.rise = rim.z() - release.z();
+    aim.launch_speed = launch_speed_for(aim.carry, aim.rise, shot_.launch_elevation, kBallDrag);
+    swing = swing_for_speed(shot_.swing, aim.launch_speed > 0 ? aim.launch_speed : 1e9);
+  }
+  aim.elevation = std::isnan(shot_.fixed_elevation) ? swing.elevation : shot_.fixed_elevation;
+  return aim;
+}
 
 void ScriptedBasketballPolicy::start(const MatchInfo& match) {
   if (match.sport != "basketball" || match.mode != "free_throw")
@@ -68,7 +105,10 @@ void ScriptedBasketballPolicy::start(const MatchInfo& match) {
         "the scripted basketball policy shoots free throws (basketball "
         "free_throw), not " +
         match.sport + " " + match.mode);
+  ball_ = match.observation.offset("ball");
   rim_ = match.observation.offset("rim");
+  aim_ = {};
+  aimed_ = false;
   control_dt_ = match.control_dt;
   clock_s_ = 0;
 }
@@ -95,8 +135,9 @@ void ScriptedBasketballPolicy::act(std::span<const float> o, std::span<float> a)
   } else if (t < shot_.shot_s) {
     pose = blend(under, hold, (t - 0.45) / 0.2);
   } else {
+    if (!aimed_) aim_ = aim_for(o), aimed_ = true;
     pose = hold;
-    pose.elevation = shot_.release_elevation;
+    pose.elevation = aim_.elevation;
     pose.elbow = shot_.shot_elbow;
     pose.curl = shot_.shot_curl;
   }

@@ -5,29 +5,55 @@
 //   presented ball lies in the cup of the two hands and is held there by its weight and by
 //   friction (nothing else holds it: the server has no grip);
 // - shot: at `shot_s` both arms swing up in the vertical plane through the rim as fast as their
-//   drives allow (a step of their targets) to `release_elevation`, elbows and fingers closing;
-//   the ball leaves the hands as they slow down. How far it flies is set by that elevation,
-//   where it flies by the plane of the swing, turned to the rim's bearing.
-// The legs keep the root over the feet. The numbers were found by search (docs/basketball.md).
+//   drives allow (a step of their targets), elbows and fingers closing; the ball leaves the
+//   hands about 60 degrees up. Aimed by the ballistic solution: from where the ball lies in the
+//   hands and where the rim is (the observation), the launch speed whose path (gravity and drag)
+//   comes down through the rim's centre, and the swing that flings the ball at that speed, read
+//   off the swing's measured response (`swing`). Where it flies: the rim's bearing.
+// The legs keep the root over the feet. The numbers were found by search and measurement
+// (docs/basketball.md).
 #pragma once
+
+#include <cmath>
+#include <vector>
 
 #include "policies.h"
 
 namespace olympics::client {
 
+// What a swing to `elevation` does to the ball: flings it at `speed` m/s, about 60 degrees up,
+// from `ahead` m further towards the rim and `up` m higher than it lay at the swing's start.
+struct SwingResponse {
+  double elevation, speed, ahead, up;
+};
+
+// The aim of one throw, worked out at the swing's start.
+struct FreeThrowAim {
+  double carry = 0, rise = 0;  // m from the release point to the rim's centre: across, up
+  double launch_speed = 0;     // m/s the ballistic solution asks for (0: out of reach)
+  double elevation = 0;        // rad: where the swing goes
+};
+
 struct FreeThrowShot {
-  double hold_elevation = -0.431;    // rad: the arms below the horizontal while cradling
-  double hold_elbow = 0.471;         // rad: the elbows bent up under the ball
-  double palm_roll = 2.82;           // rad: the forearms rolled palm up, tilted in to a cup
-  double wrist_up = 0.0;             // rad: the hands bent back, fingers up
-  double finger_curl = 0.183;        // rad per finger joint: the cup
-  double hands_apart = -0.251;       // rad: each arm turned out from the rim's direction
-  double under = 0.082;              // rad: how far below the hold the hands come in
-  double shot_s = 0.95;              // s from the start: the swing
-  double shot_curl = 0.559;          // rad: the fingers close in the swing
-  double release_elevation = 2.596;  // rad above the horizontal: where the arms stop
-  double aim_offset = 0.008;         // rad added to the rim's bearing (the swing pulls aside)
-  double shot_elbow = 0.492;         // rad: the elbows in the swing
+  double hold_elevation = -0.431;  // rad: the arms below the horizontal while cradling
+  double hold_elbow = 0.471;       // rad: the elbows bent up under the ball
+  double palm_roll = 2.82;         // rad: the forearms rolled palm up, tilted in to a cup
+  double wrist_up = 0.0;           // rad: the hands bent back, fingers up
+  double finger_curl = 0.183;      // rad per finger joint: the cup
+  double hands_apart = -0.251;     // rad: each arm turned out from the rim's direction
+  double under = 0.082;            // rad: how far below the hold the hands come in
+  double shot_s = 0.95;            // s from the start: the swing
+  double shot_curl = 0.559;        // rad: the fingers close in the swing
+  // The swing's response, measured over seeds 201-300 (medians of the throws that rise: about
+  // two in three; docs/basketball.md, "Aiming by the ballistic solution"). Ordered by speed.
+  std::vector<SwingResponse> swing = {{1.5, 5.75, 0.446, 0.560}, {1.7, 6.24, 0.448, 0.521},
+                                      {1.9, 6.49, 0.463, 0.556}, {2.1, 6.71, 0.491, 0.590},
+                                      {2.3, 7.00, 0.459, 0.544}, {2.4, 7.17, 0.428, 0.449},
+                                      {2.5, 7.41, 0.425, 0.447}, {2.6, 7.53, 0.433, 0.457}};
+  double launch_elevation = 60 * M_PI / 180;  // rad: the ball's direction at the release
+  double fixed_elevation = NAN;  // set: swing there whatever the aim says (measuring `swing`)
+  double aim_offset = 0.008;     // rad added to the rim's bearing (the swing pulls aside)
+  double shot_elbow = 0.492;     // rad: the elbows in the swing
   // Standing balance: ankle pitch per m of the root ahead of the ankles and per m/s, its bias
   // (the arms and ball ahead of the body), hip pitch per m.
   double ankle_p = 1.0, ankle_d = 2.0, ankle_bias = 0.0, hip_p = 1.0;
@@ -38,9 +64,16 @@ class ScriptedBasketballPolicy : public Policy {
   explicit ScriptedBasketballPolicy(const FreeThrowShot& shot = {}) : shot_(shot) {}
   void start(const MatchInfo& match) override;
   void act(std::span<const float> observation, std::span<float> action) override;
+  // This throw's aim (set at the swing's start).
+  const FreeThrowAim& aim() const { return aim_; }
 
  private:
+  FreeThrowAim aim_for(std::span<const float> observation) const;
+
   FreeThrowShot shot_;
+  FreeThrowAim aim_;
+  bool aimed_ = false;
+  int ball_ = 0;
   int rim_ = 0;
   double control_dt_ = 0;
   double clock_s_ = 0;
