@@ -46,8 +46,9 @@ void print_basketball_report(const nlohmann::json& r) {
                 f["throws"].get<int>(), 100 * f["made"].get<double>(), f["endings"].dump().c_str());
   if (r.contains("scripted_by_distance"))
     for (const auto& [d, f] : r["scripted_by_distance"].items())
-      std::printf("free throw, scripted from %s m (the rule's line: 4.6 m), %d throws: made %.0f%%\n",
-                  d.c_str(), f["throws"].get<int>(), 100 * f["made"].get<double>());
+      std::printf(
+          "free throw, scripted from %s m (the rule's line: 4.6 m), %d throws: made %.0f%%\n",
+          d.c_str(), f["throws"].get<int>(), 100 * f["made"].get<double>());
   for (const char* mode : {"1v1", "2v2"}) {
     const std::string key = "speed_" + std::string(mode);
     if (!r.contains(key)) continue;
