@@ -11,12 +11,12 @@ namespace {
 
 using namespace smpl;
 
-constexpr double kBehind_m = 0.7;    // the approach point, behind the ball
-constexpr double kLinedUp_m = 0.35;  // off the ball-to-goal line by less than this: lined up
-constexpr double kLoseLine_m = 0.6;  // ...and it stops pushing when further off than this
-constexpr double kThrough_m = 0.6;   // while pushing, it walks to this far past the ball
-constexpr double kKeepBack_m = 3.8;  // from the ball while the other side restarts
-constexpr double kDefend_m = 5.0;    // the second player, this far out from its own goal
+constexpr double kBehind_m = 0.7;      // the approach point, behind the ball
+constexpr double kLinedUp_m = 0.35;    // off the ball-to-goal line by less than this: lined up
+constexpr double kLoseLine_m = 0.6;    // ...and it stops pushing when further off than this
+constexpr double kThrough_m = 0.6;     // while pushing, it walks to this far past the ball
+constexpr double kKeepBack_m = 3.8;    // from the ball while the other side restarts
+constexpr double kDefend_m = 5.0;      // the second player, this far out from its own goal
 constexpr double kDownBelow_m = -0.4;  // a teammate's root this far below mine: it is down
 
 Eigen::Vector2d xy(std::span<const float> o, int at) { return {o[at], o[at + 1]}; }
