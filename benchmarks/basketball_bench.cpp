@@ -1,5 +1,6 @@
 #include "basketball_bench.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 
@@ -28,9 +29,14 @@ nlohmann::json run_basketball_bench(const BasketballBenchOptions& o) {
   nlohmann::json report = {{"free_throw", nlohmann::json::object()}};
   for (const auto& p : o.policies) report["free_throw"][p] = free_throws(p, o.throws);
   // The scripted shooter aims by the ballistic solution: from nearer lines too.
-  for (double d : o.scripted_distances)
-    report["scripted_by_distance"][std::to_string(d).substr(0, 3)] =
+  const bool scripted =
+      std::find(o.policies.begin(), o.policies.end(), "scripted") != o.policies.end();
+  for (double d : scripted ? o.scripted_distances : std::vector<double>{}) {
+    char key[32];
+    std::snprintf(key, sizeof key, "%g", d);
+    report["scripted_by_distance"][key] =
         free_throws("scripted", o.throws, {{"free_throw_distance", d}});
+  }
   if (o.speed) {
     static const core::ModelSpec smplx = core::load_humanoid(core::HumanoidKind::SmplX);
     for (const char* mode : {"1v1", "2v2"})

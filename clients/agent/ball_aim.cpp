@@ -34,8 +34,8 @@ double carry_to_height(double speed, double elevation, double rise, double drag,
 
 double launch_speed_for(double carry, double rise, double elevation, double drag, double step_s) {
   if (carry_to_height(kMaxSpeed, elevation, rise, drag, step_s) < carry) return 0;
-  // Below `low` the path's apex stays under the height (or the carry falls short); carry grows
-  // with speed at a fixed elevation, so bisect.
+  // At a fixed elevation the carry grows with the speed; a speed whose path never reaches the
+  // height counts as too short (carry_to_height < 0). So bisect.
   double low = 0, high = kMaxSpeed;
   while (high - low > 1e-3) {
     const double mid = 0.5 * (low + high);

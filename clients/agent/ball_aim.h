@@ -11,8 +11,8 @@ double drag_per_mass(double radius_m, double mass_kg, double drag_coefficient);
 
 // The server's physics step (DESIGN.md: 120 Hz). The flight is integrated as ODE does it
 // (velocity first, then position with the new velocity; drag from the velocity at the step's
-// start), so a prediction follows the server's ball to millimetres, not the exact parabola (from
-// which a 120 Hz step falls some 4 cm short over a free throw).
+// start), so a prediction follows the server's ball to within a centimetre, not the exact
+// parabola (from which a 120 Hz step falls some 5 cm short over a free throw).
 inline constexpr double kServerStep_s = 1.0 / 120;
 
 // Launched at `speed` m/s, `elevation` rad above the horizontal: how far the ball has travelled

@@ -1,10 +1,10 @@
 #include "scripted_basketball.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <stdexcept>
 
-#include "ball_aim.h"
 #include "smplx_observation.h"
 
 namespace olympics::client {
@@ -62,8 +62,9 @@ void stand(std::span<const float> o, std::span<float> a, const FreeThrowShot& s)
 }
 
 // The swing whose ball leaves at `speed`, interpolated in the measured responses (ordered by
-// speed); beyond their ends, the end.
+// speed, at least one); beyond their ends, the end (which flings the ball at its own speed).
 SwingResponse swing_for_speed(const std::vector<SwingResponse>& swing, double speed) {
+  assert(!swing.empty());
   if (speed <= swing.front().speed) return swing.front();
   for (size_t i = 1; i < swing.size(); ++i) {
     const SwingResponse &a = swing[i - 1], &b = swing[i];
@@ -75,13 +76,12 @@ SwingResponse swing_for_speed(const std::vector<SwingResponse>& swing, double sp
   return swing.back();
 }
 
-// The basketball's drag (SPORTS.md: r 0.12 m, 0.60 kg, Cd 0.5).
-const double kBallDrag = drag_per_mass(0.12, 0.60, 0.5);
-
 }  // namespace
 
 // The release point depends a little on the swing, the swing on the speed, the speed on the
-// release point: a few rounds of that settle it.
+// release point: a few rounds of that settle it. The release point is taken on the line from the
+// ball to the rim (the swing's plane is turned to the root's bearing of the rim, plus
+// `aim_offset`: a centimetre or two aside over the 0.45 m the swing carries the ball).
 FreeThrowAim ScriptedBasketballPolicy::aim_for(std::span<const float> o) const {
   const Eigen::Vector3d ball = vec3(o, ball_), rim = vec3(o, rim_);
   const Eigen::Vector3d towards =
@@ -92,7 +92,8 @@ FreeThrowAim ScriptedBasketballPolicy::aim_for(std::span<const float> o) const {
     const Eigen::Vector3d release = ball + swing.ahead * towards + Eigen::Vector3d(0, 0, swing.up);
     aim.carry = (rim - release).head<2>().norm();
     aim.rise = rim.z() - release.z();
-    aim.launch_speed = launch_speed_for(aim.carry, aim.rise, shot_.launch_elevation, kBallDrag);
+    aim.launch_speed =
+        launch_speed_for(aim.carry, aim.rise, shot_.launch_elevation, shot_.ball_drag);
     swing = swing_for_speed(shot_.swing, aim.launch_speed > 0 ? aim.launch_speed : 1e9);
   }
   aim.elevation = std::isnan(shot_.fixed_elevation) ? swing.elevation : shot_.fixed_elevation;

@@ -11,12 +11,13 @@
 //   comes down through the rim's centre, and the swing that flings the ball at that speed, read
 //   off the swing's measured response (`swing`). Where it flies: the rim's bearing.
 // The legs keep the root over the feet. The numbers were found by search and measurement
-// (docs/basketball.md).
+// (docs/basketball.md, "The scripted free-throw shooter").
 #pragma once
 
 #include <cmath>
 #include <vector>
 
+#include "ball_aim.h"
 #include "policies.h"
 
 namespace olympics::client {
@@ -45,12 +46,13 @@ struct FreeThrowShot {
   double shot_s = 0.95;            // s from the start: the swing
   double shot_curl = 0.559;        // rad: the fingers close in the swing
   // The swing's response, measured over seeds 201-300 (medians of the throws that rise: about
-  // two in three; docs/basketball.md, "Aiming by the ballistic solution"). Ordered by speed.
+  // two in three; docs/basketball.md, "The swing's response"). Ordered by speed.
   std::vector<SwingResponse> swing = {{1.5, 5.75, 0.446, 0.560}, {1.7, 6.24, 0.448, 0.521},
                                       {1.9, 6.49, 0.463, 0.556}, {2.1, 6.71, 0.491, 0.590},
                                       {2.3, 7.00, 0.459, 0.544}, {2.4, 7.17, 0.428, 0.449},
                                       {2.5, 7.41, 0.425, 0.447}, {2.6, 7.53, 0.433, 0.457}};
-  double launch_elevation = 60 * M_PI / 180;  // rad: the ball's direction at the release
+  double launch_elevation = 60 * M_PI / 180;          // rad: the ball's direction at the release
+  double ball_drag = drag_per_mass(0.12, 0.60, 0.5);  // the basketball's (SPORTS.md)
   double fixed_elevation = NAN;  // set: swing there whatever the aim says (measuring `swing`)
   double aim_offset = 0.008;     // rad added to the rim's bearing (the swing pulls aside)
   double shot_elbow = 0.492;     // rad: the elbows in the swing
