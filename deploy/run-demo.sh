@@ -21,7 +21,8 @@ mkdir -p replays
 server=$!
 trap 'kill $server 2>/dev/null; wait $server 2>/dev/null || true' EXIT
 request="demo-$$-$(date +%s)"
-common=(--lcm-url "$url" --request-id "$request" --sport "$sport" --mode 1v1 --seed 7
+# --server: the demo's own server hosts (and stores) the match, even with others on this URL
+common=(--lcm-url "$url" --server "demo-$$" --request-id "$request" --sport "$sport" --mode 1v1 --seed 7
         --time-limit 180 --options "$options" --policy scripted)
 "$bin/olympics-agent" "${common[@]}" --slots 0 --name ace > demo-agent0.log 2>&1 &
 agent0=$!
