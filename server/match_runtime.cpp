@@ -65,9 +65,12 @@ MatchRuntime::MatchRuntime(MatchIdentity identity, RuntimeSettings settings,
 }
 
 template <typename Msg>
-void MatchRuntime::send(const std::string& channel, const Msg& msg) {
+void MatchRuntime::send(const std::string& channel, const Msg& msg, bool log_whole) {
   const auto buf = protocol::encode(msg);
-  if (log_) log_->write(channel, buf.data(), static_cast<int>(buf.size()));
+  if (log_) {
+    log_->write(channel, buf.data(), static_cast<int>(buf.size()));
+    if (log_whole) log_->flush();
+  }
   transport_.publish_raw(channel, buf.data(), static_cast<int>(buf.size()));
 }
 
@@ -497,9 +500,7 @@ void MatchRuntime::finish(Clock::time_point now) {
 
 void MatchRuntime::publish_result() {
   // Whoever hears the result may read the match's LCM log at once: it is whole on disk first.
-  const auto buf = protocol::encode(result_);
-  if (log_) log_->write(protocol::kResult, buf.data(), static_cast<int>(buf.size())), log_->flush();
-  transport_.publish_raw(protocol::kResult, buf.data(), static_cast<int>(buf.size()));
+  send(protocol::kResult, result_, /*log_whole=*/true);
 }
 
 std::vector<StoredParticipant> MatchRuntime::participants() const {

@@ -117,8 +117,10 @@ class MatchRuntime {
   int client_index(const std::string& client_id) const;
   bool still_playing(const Client& k) const;
   std::vector<int> all_clients() const;
+  // Publishes `msg`, written to the match's LCM log first; `log_whole`: and the log flushed to
+  // disk before it goes out (whoever hears it may read the log at once).
   template <typename Msg>
-  void send(const std::string& channel, const Msg& msg);
+  void send(const std::string& channel, const Msg& msg, bool log_whole = false);
 
   MatchIdentity identity_;
   RuntimeSettings settings_;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
 
 #include "bundle.h"
@@ -100,9 +101,8 @@ Connection::Connection(const ClientOptions& options)
   if (!exact_observation_channels_)
     transport_.subscribe(std::string(protocol::kObsPrefix) + ".*",
                          [this](const std::string& channel, const std::uint8_t* data, int size) {
-                           on_observation_message(
-                               channel.substr(std::string(protocol::kObsPrefix).size()), data,
-                               size);
+                           static const size_t prefix = std::strlen(protocol::kObsPrefix);
+                           on_observation_message(channel.substr(prefix), data, size);
                          });
   transport_.subscribe_to<olympics::server_announce_t>(
       protocol::kAnnounce, [this](const std::string&, const olympics::server_announce_t& a) {
