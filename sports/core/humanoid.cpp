@@ -4,6 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/body_mass.h"
 #include "core/rotation.h"
 
 namespace olympics::core {
@@ -24,32 +25,6 @@ std::vector<Transform> rest_transforms(const ModelSpec& spec) {
     out[i] = out[b.parent] * Transform{b.pos, b.quat};
   }
   return out;
-}
-
-dMass geom_mass(const GeomSpec& g) {
-  dMass m;
-  switch (g.shape) {
-    case GeomShape::Sphere:
-      dMassSetSphere(&m, g.density, g.radius);
-      break;
-    case GeomShape::Capsule:
-      dMassSetCapsule(&m, g.density, 3, g.radius, 2 * g.half_length);
-      break;
-    case GeomShape::Cylinder:
-      dMassSetCylinder(&m, g.density, 3, g.radius, 2 * g.half_length);
-      break;
-    case GeomShape::Box:
-      dMassSetBox(&m, g.density, 2 * g.half_extents.x(), 2 * g.half_extents.y(),
-                  2 * g.half_extents.z());
-      break;
-  }
-  if (g.mass) dMassAdjust(&m, *g.mass);
-  dMatrix3 r;
-  dQuaternion q = {g.quat.w(), g.quat.x(), g.quat.y(), g.quat.z()};
-  dQtoR(q, r);
-  dMassRotate(&m, r);
-  dMassTranslate(&m, g.pos.x(), g.pos.y(), g.pos.z());
-  return m;
 }
 
 dGeomID create_geom(dSpaceID space, const GeomSpec& g) {
@@ -117,11 +92,8 @@ Humanoid::Humanoid(PhysicsWorld& world, const ModelSpec& spec, const RootPlaceme
     if (b.geoms.empty())
       throw std::invalid_argument(spec_.source + ": body \"" + b.name +
                                   "\" has no geom, so it has no mass; give it one");
-    dMass total;
-    dMassSetZero(&total);
+    dMass total = body_mass(b);
     for (const auto& g : b.geoms) {
-      dMass m = geom_mass(g);
-      dMassAdd(&total, &m);
       auto [centre, extent] = geom_z_centre_and_extent(g, rest[i]);
       lowest = std::min(lowest, centre - extent);
       highest = std::max(highest, centre + extent);
