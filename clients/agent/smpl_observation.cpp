@@ -13,9 +13,19 @@ Eigen::Matrix3d body_rotation(std::span<const float> o, int body) {
   return r;
 }
 
+namespace {
+// HUMANOID.md: PD target = pi a per axis, knee flexion 5 a.
+double action_scale(int body, int axis) {
+  return (body == kLKnee || body == kRKnee) && axis == 1 ? 5.0 : M_PI;
+}
+}  // namespace
+
 void set_joint(std::span<float> action, int body, int axis, double radians) {
-  const bool knee_flexion = (body == kLKnee || body == kRKnee) && axis == 1;
-  action[3 * (body - 1) + axis] = static_cast<float>(radians / (knee_flexion ? 5.0 : M_PI));
+  action[3 * (body - 1) + axis] = static_cast<float>(radians / action_scale(body, axis));
+}
+
+double joint_angle(std::span<const float> action, int body, int axis) {
+  return action[3 * (body - 1) + axis] * action_scale(body, axis);
 }
 
 }  // namespace olympics::client::smpl

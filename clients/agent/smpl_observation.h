@@ -51,5 +51,7 @@ Eigen::Matrix3d body_rotation(std::span<const float> o, int body);
 // Sets joint `body`'s hinge `axis` (0 x, 1 y, 2 z) to `radians`: a = radians / pi, knee flexion
 // a = radians / 5 (HUMANOID.md: PD target = pi a per axis, knee flexion 5 a).
 void set_joint(std::span<float> action, int body, int axis, double radians);
+// The angle set_joint wrote.
+double joint_angle(std::span<const float> action, int body, int axis);
 
 }  // namespace olympics::client::smpl

@@ -53,12 +53,21 @@ void StepController::stand(std::span<const float> o, std::span<float> a) const {
   const BalanceGains& g = gains_.balance;
   const Eigen::Vector3d mid = 0.5 * (body_position(o, kLAnkle) + body_position(o, kRAnkle));
   const Eigen::Vector3d v = root_velocity(o);
-  const double dx = -mid.x(), dy = -mid.y();
+  const Eigen::Vector2d balanced = balance_com_ ? com_offset_ : Eigen::Vector2d::Zero();
+  const double dx = balanced.x() - mid.x(), dy = balanced.y() - mid.y();
   for (int ankle : {kLAnkle, kRAnkle}) {
     set_joint(a, ankle, 1, g.ankle_bias + g.ankle_p * dx + g.ankle_d * v.x());
     set_joint(a, ankle, 0, -(g.ankle_p * dy + g.ankle_d * v.y()));
   }
   for (int hip : {kLHip, kRHip}) set_joint(a, hip, 1, g.hip_p * dx);
+}
+
+bool StepController::losing_balance(std::span<const float> o) const {
+  if (!balance_com_ || gains_.recover_m <= 0) return false;
+  const Eigen::Vector2d mid =
+      0.5 * (body_position(o, kLAnkle) + body_position(o, kRAnkle)).head<2>();
+  return (com_offset_ - mid).norm() > gains_.recover_m ||
+         root_velocity(o).head<2>().norm() > gains_.recover_speed;
 }
 
 void StepController::begin_step(std::span<const float> o, bool left_swings) {
@@ -76,7 +85,7 @@ void StepController::act(std::span<const float> o, const Eigen::Vector2d& target
   const double ground = -o[0];  // the floor, root-relative
   if (!stepping_) {
     const bool must_turn = g.turn_start > 0 && std::abs(turn) > g.turn_start;
-    if (distance < g.start_m && !must_turn) return stand(o, a);
+    if (distance < g.start_m && !must_turn && !losing_balance(o)) return stand(o, a);
     stepping_ = true;
     begin_step(o, target.y() > 0);
   } else if (phase_s_ >= g.step_s) {

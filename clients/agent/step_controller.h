@@ -45,6 +45,9 @@ struct StepGains {
   // Standing, it also steps (in place) to turn when asked to turn more than this; it stands
   // again once the turn left is under half of it. 0: it turns only while walking somewhere.
   double turn_start = 0;
+  // Balancing the centre of mass (balance_centre_of_mass), it steps to catch itself when that
+  // point is this far from the middle of the feet, or the body moves this fast; 0: never.
+  double recover_m = 0.12, recover_speed = 0.35;
 };
 
 class StepController {
@@ -61,9 +64,18 @@ class StepController {
 
   bool stepping() const { return stepping_; }
 
+  // Standing, balance the whole body's centre of mass instead of the root: `offset` is where it
+  // is (heading frame, from the root; control::BodyModel::centre_of_mass), held `ahead` metres in
+  // front of the ankles. For players whose arms carry weight out in front (a racket).
+  void balance_centre_of_mass(const Eigen::Vector3d& offset, double ahead) {
+    com_offset_ = offset.head<2>() - Eigen::Vector2d(ahead, 0);
+    balance_com_ = true;
+  }
+
  private:
   void stand(std::span<const float> o, std::span<float> a) const;
   void begin_step(std::span<const float> o, bool left_swings);
+  bool losing_balance(std::span<const float> o) const;
 
   StepGains gains_;
   double control_dt_;
@@ -71,6 +83,8 @@ class StepController {
   bool left_swings_ = true;
   double phase_s_ = 0;  // time into the current step
   Eigen::Vector2d lift_off_{0, 0};
+  bool balance_com_ = false;
+  Eigen::Vector2d com_offset_{0, 0};  // the point balanced over the ankles, from the root
 };
 
 }  // namespace olympics::client
