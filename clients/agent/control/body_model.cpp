@@ -1,0 +1,132 @@
+#include "control/body_model.h"
+
+#include <stdexcept>
+
+#include "core/body_mass.h"
+#include "equipment/equipment.h"
+#include "smpl_observation.h"
+
+namespace olympics::client::control {
+
+namespace {
+constexpr double kGravity = 9.81;
+}
+
+BodyModel::BodyModel(const core::ModelSpec& spec) {
+  for (const core::BodySpec& b : spec.bodies) {
+    if (!b.quat.isApprox(Eigen::Quaterniond::Identity()))
+      throw std::invalid_argument(spec.source + ": body \"" + b.name +
+                                  "\" is turned from its parent at rest; the control model "
+                                  "expects the SMPL convention of aligned frames");
+    ModelBody m;
+    m.name = b.name;
+    m.parent = b.parent;
+    m.offset = b.pos;
+    const dMass mass = core::body_mass(b);
+    m.mass = mass.mass;
+    m.com = {mass.c[0], mass.c[1], mass.c[2]};
+    for (size_t h = 0; h < b.hinges.size() && h < 3; ++h) {
+      m.kp[h] = b.hinges[h].kp;
+      m.kd[h] = b.hinges[h].kd;
+    }
+    total_mass_ += m.mass;
+    bodies_.push_back(m);
+  }
+  subtree_.resize(bodies_.size());
+  for (int i = size() - 1; i >= 0; --i) {
+    subtree_[i].insert(subtree_[i].begin(), i);
+    if (const int p = bodies_[i].parent; p >= 0)
+      subtree_[p].insert(subtree_[p].end(), subtree_[i].begin(), subtree_[i].end());
+  }
+}
+
+BodyModel BodyModel::humanoid(core::HumanoidKind kind,
+                              const sports::equipment::EquipmentSpec* equipment) {
+  core::ModelSpec spec = core::load_humanoid(kind);
+  if (equipment) sports::equipment::attach_equipment(spec, *equipment);
+  return BodyModel(spec);
+}
+
+int BodyModel::index(const std::string& name) const {
+  std::string known;
+  for (int i = 0; i < size(); ++i) {
+    if (bodies_[i].name == name) return i;
+    known += (i ? ", " : "") + bodies_[i].name;
+  }
+  throw std::invalid_argument("the body model has no body \"" + name + "\"; its bodies: " + known);
+}
+
+bool BodyModel::in_subtree(int body, int ancestor) const {
+  for (int b = body; b >= 0; b = bodies_[b].parent)
+    if (b == ancestor) return true;
+  return false;
+}
+
+BodyPose BodyModel::pose_from_observation(std::span<const float> o) const {
+  if (size() != 24)
+    throw std::invalid_argument(
+        "pose_from_observation reads the SMPL self observation (24 bodies)");
+  BodyPose pose;
+  for (int i = 0; i < size(); ++i) {
+    pose.position.push_back(smpl::body_position(o, i));
+    pose.rotation.push_back(smpl::body_rotation(o, i));
+  }
+  return pose;
+}
+
+BodyPose BodyModel::forward(const std::vector<Eigen::Matrix3d>& relative) const {
+  BodyPose pose;
+  pose.position.resize(size());
+  pose.rotation.resize(size());
+  for (int i = 0; i < size(); ++i) {
+    const int p = bodies_[i].parent;
+    if (p < 0) {
+      pose.position[i].setZero();
+      pose.rotation[i] = relative[i];
+      continue;
+    }
+    pose.position[i] = pose.position[p] + pose.rotation[p] * bodies_[i].offset;
+    pose.rotation[i] = pose.rotation[p] * relative[i];
+  }
+  return pose;
+}
+
+std::vector<Eigen::Matrix3d> BodyModel::relative_rotations(const BodyPose& pose) const {
+  std::vector<Eigen::Matrix3d> r(size());
+  for (int i = 0; i < size(); ++i) {
+    const int p = bodies_[i].parent;
+    r[i] =
+        p < 0 ? pose.rotation[i] : Eigen::Matrix3d(pose.rotation[p].transpose() * pose.rotation[i]);
+  }
+  return r;
+}
+
+Eigen::Vector3d BodyModel::centre_of_mass(const BodyPose& pose) const {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (int i = 0; i < size(); ++i)
+    sum += bodies_[i].mass * (pose.position[i] + pose.rotation[i] * bodies_[i].com);
+  return sum / total_mass_;
+}
+
+Eigen::Vector3d BodyModel::gravity_torque(const BodyPose& pose, int body) const {
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero();
+  for (int b : subtree_[body]) torque += weight_torque(pose, b, pose.position[body]);
+  const int parent = bodies_[body].parent;
+  return parent < 0 ? torque : Eigen::Vector3d(pose.rotation[parent].transpose() * torque);
+}
+
+Eigen::Vector3d BodyModel::gravity_torque_above(const BodyPose& pose, int body) const {
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero();
+  for (int b = 0; b < size(); ++b)
+    if (!in_subtree(b, body)) torque += weight_torque(pose, b, pose.position[body]);
+  const int parent = bodies_[body].parent;
+  return parent < 0 ? torque : Eigen::Vector3d(pose.rotation[parent].transpose() * torque);
+}
+
+Eigen::Vector3d BodyModel::weight_torque(const BodyPose& pose, int b,
+                                         const Eigen::Vector3d& about) const {
+  const Eigen::Vector3d com = pose.position[b] + pose.rotation[b] * bodies_[b].com;
+  return (com - about).cross(Eigen::Vector3d(0, 0, -kGravity * bodies_[b].mass));
+}
+
+}  // namespace olympics::client::control

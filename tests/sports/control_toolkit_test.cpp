@@ -1,0 +1,170 @@
+// The control toolkit for scripted players (clients/agent/control): inverse kinematics reaches a
+// racket pose, gravity compensation holds an outstretched racket arm, and the predicted ball path
+// is the server's through a bounce.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "control/ball_path.h"
+#include "control/body_model.h"
+#include "control/drive_target.h"
+#include "control/limb_control.h"
+#include "control/smpl_limbs.h"
+#include "control/stroke_plan.h"
+#include "core/control_rate.h"
+#include "core/humanoid_assets.h"
+#include "core/humanoid_scene.h"
+#include "core/rotation.h"
+#include "core/self_observation.h"
+#include "match_info.h"
+#include "racket/racket_equipment.h"
+#include "racket/racket_game.h"
+#include "registry.h"
+#include "smpl_observation.h"
+#include "step_controller.h"
+
+namespace olympics::client::control {
+namespace {
+
+const auto kRacket = sports::racket::tennis_racket();
+
+// Random arm poses within the limits, through forward kinematics: reachable by construction.
+TEST(LimbIk, ReachesReachableRacketPosesWithin1cmAnd3Degrees) {
+  const BodyModel model = BodyModel::humanoid(core::HumanoidKind::Smpl, &kRacket);
+  const LimbIk ik(model, smpl_right_arm(), kRacket.face_centre, Eigen::Vector3d::UnitZ());
+  const BodyPose rest =
+      model.forward(std::vector<Eigen::Matrix3d>(24, Eigen::Matrix3d::Identity()));
+  std::mt19937 rng(7);
+  int solved = 0;
+  for (int trial = 0; trial < 50; ++trial) {
+    std::vector<Eigen::Matrix3d> joints;
+    for (const LimbJoint& j : ik.joints()) {
+      Eigen::Vector3d a;
+      // The middle half of each range: poses a racket player uses, not the joints' extremes.
+      for (int k = 0; k < 3; ++k) {
+        const double mid = 0.5 * (j.lo[k] + j.hi[k]), half = 0.25 * (j.hi[k] - j.lo[k]);
+        a[k] = std::uniform_real_distribution<double>(mid - half, mid + half)(rng);
+      }
+      joints.push_back(from_euler_xyz(a));
+    }
+    LimbGoal goal;
+    ik.end_of(rest, joints, goal.position, goal.axis);
+    const LimbSolution s = ik.solve(rest, goal, {}, 60);
+    EXPECT_LT(s.position_error_m, 0.01) << "trial " << trial;
+    EXPECT_LT(s.axis_error_rad, 3 * M_PI / 180) << "trial " << trial;
+    solved += s.position_error_m < 0.01 && s.axis_error_rad < 3 * M_PI / 180;
+  }
+  std::printf("solved %d of 50\n", solved);
+}
+
+// The largest distance (over seconds 1 to 4) between the racket face and where the arm was asked
+// to hold it, for a humanoid standing with the arm out to its front right.
+double held_face_error(bool compensate) {
+  core::ModelSpec spec = core::load_humanoid(core::HumanoidKind::Smpl);
+  sports::equipment::attach_equipment(spec, kRacket);
+  const BodyModel model(spec);
+  LimbControl arm(model,
+                  LimbIk(model, smpl_right_arm(), kRacket.face_centre, Eigen::Vector3d::UnitZ()));
+  core::HumanoidScene scene;
+  scene.add_humanoid(spec, {{0, 0, 0}, 0});
+  StepGains gains;
+  gains.balance = {3, 2, 0, 1};  // stiff ankles: the body stands still under the arm's load
+  StepController legs(gains, core::kControlDt);
+  std::vector<float> obs(358), act(69);
+  LimbGoal goal;
+  goal.position = {0.45, -0.5, 0.3};  // heading frame: ahead, right, near shoulder height
+  goal.axis = {1, 0, 0};
+  double worst = 0;
+  for (int tick = 0; tick < 4 * 30; ++tick) {
+    const auto bodies = scene.humanoid(0).body_states();
+    core::write_self_observation(bodies, obs);
+    const BodyPose pose = model.pose_from_observation(obs);
+    if (tick >= 30) {
+      const Eigen::Vector3d face =
+          pose.position[kSmplRHand] + pose.rotation[kSmplRHand] * kRacket.face_centre;
+      worst = std::max(worst, (face - goal.position).norm());
+    }
+    std::fill(act.begin(), act.end(), 0.0f);
+    legs.balance_centre_of_mass(model.centre_of_mass(pose), -0.03);
+    legs.act(obs, {0, 0}, 0, act);
+    if (compensate) hold_standing_legs(model, pose, act);
+    arm.drive(pose, goal, goal, core::kControlDt, act, compensate);
+    static constexpr int kTrunk[] = {kSmplTorso, kSmplSpine, kSmplChest, kSmplRThorax};
+    if (compensate) hold_against_gravity(model, pose, kTrunk, act);
+    smpl::set_joint(act, smpl::kLShoulder, 0, -1.2);  // the free arm down
+    scene.set_action(0, act);
+    scene.tick();
+  }
+  return worst;
+}
+
+TEST(GravityCompensation, HoldsAnOutstretchedRacketArmWithin2cmFor3s) {
+  const double with = held_face_error(true), without = held_face_error(false);
+  std::printf("face error: %.1f mm compensated, %.1f mm without\n", 1000 * with, 1000 * without);
+  EXPECT_LT(with, 0.02);
+  EXPECT_GT(without, 2 * with) << "compensation should matter";
+}
+
+// A fed ball's path, predicted from the first observation, against the server's ball as the
+// observations show it, through its bounce on the table or court.
+double path_error(const std::string& sport, std::uint64_t seed, int* bounced) {
+  auto match = sports::sport_or_throw(sport).create({"ball_return", seed, 30.0, {}});
+  const auto layout = ObservationLayout::from_blocks(match->layout().observation);
+  const int ball = layout.offset("ball_position"), velocity = layout.offset("ball_velocity"),
+            court = layout.offset("court_position"), heading = layout.offset("court_heading"),
+            rally = layout.offset("rally");
+  std::vector<float> obs(match->obs_size()), zero(match->action_size(), 0.0f);
+  auto frame_of = [&] {
+    CourtFrame f;
+    f.root = {obs[court], obs[court + 1], obs[0]};
+    f.yaw = std::atan2(obs[heading + 1], obs[heading]);
+    return f;
+  };
+  match->observe(0, obs);
+  CourtFrame f = frame_of();
+  const BallPath path(sport == "tennis" ? sports::racket::tennis_game(1.0)
+                                        : sports::racket::table_tennis_game());
+  const auto predicted =
+      path.predict(f.point({obs[ball], obs[ball + 1], obs[ball + 2]}),
+                   f.vector({obs[velocity], obs[velocity + 1], obs[velocity + 2]}), 3.0);
+  double worst = 0;
+  const int per_tick = static_cast<int>(std::lround(core::kControlDt / BallPath::kStep_s));
+  for (int tick = 1; tick * per_tick <= static_cast<int>(predicted.size()); ++tick) {
+    match->step({std::span<const float>(zero)});
+    if (match->outcome().match_over) break;
+    match->observe(0, obs);
+    f = frame_of();
+    const Eigen::Vector3d seen = f.point({obs[ball], obs[ball + 1], obs[ball + 2]});
+    const BallSample& p = predicted[tick * per_tick - 1];
+    if (p.own_bounces > 1 || p.other_bounces > 0) break;  // on to where the player stands
+    if ((seen - f.root).head<2>().norm() < 1.0) break;    // the body may be in the way
+    *bounced = std::max(*bounced, static_cast<int>(obs[rally + 2]));
+    worst = std::max(worst, (seen - p.position).norm());
+  }
+  return worst;
+}
+
+TEST(BallPath, MatchesTheServersBallThroughABounceWithin1cm) {
+  for (const std::string sport : {"table_tennis", "tennis"}) {
+    int bounced = 0;
+    double worst = 0;
+    for (std::uint64_t seed = 1; seed <= 10; ++seed)
+      worst = std::max(worst, path_error(sport, seed, &bounced));
+    std::printf("%s: worst %.2f mm\n", sport.c_str(), 1000 * worst);
+    EXPECT_EQ(bounced, 1) << sport << ": the comparison should follow the ball past its bounce";
+    EXPECT_LT(worst, 0.01) << sport;
+  }
+}
+
+// The face motion solved for a wanted outgoing velocity gives it through the server's bounce.
+TEST(StrokePlan, FaceMotionGivesTheWantedBallVelocity) {
+  const Eigen::Vector3d in(-3, 0.2, 1.5), out(4, -0.3, 2.5);
+  const FaceMotion f = face_motion_for(in, out, 0.85, 0.8);
+  EXPECT_NEAR((f.ball_out - out).norm(), 0, 1e-4);
+  EXPECT_NEAR(f.normal.norm(), 1, 1e-9);
+  EXPECT_GT(f.normal.x(), 0);
+}
+
+}  // namespace
+}  // namespace olympics::client::control
