@@ -41,17 +41,22 @@ Flight fly(const RacketGame& game, const equipment::BallFlight& model, const Eig
   return f;
 }
 
+// Depth is a fraction of the half's length from the net, in [depth_lo, depth_hi].
 Eigen::Vector2d uniform_point_in_half(const RacketGame& game, int team, double y_lo, double y_hi,
-                                      std::mt19937_64& rng) {
-  const double depth = std::uniform_real_distribution<double>(0.05, 1.0)(rng) * game.half_length;
+                                      std::mt19937_64& rng, double depth_lo = 0.05,
+                                      double depth_hi = 1.0) {
+  const double depth =
+      std::uniform_real_distribution<double>(depth_lo, depth_hi)(rng) * game.half_length;
   const double y = std::uniform_real_distribution<double>(y_lo, y_hi)(rng);
   return {RacketGame::side_sign(team) * depth, y};
 }
 
 Launch draw_launch(const RacketGame& game, const Eigen::Vector3d& from, int team, double y_lo,
-                   double y_hi, double speed_lo, double speed_hi, std::mt19937_64& rng) {
+                   double y_hi, double speed_lo, double speed_hi, std::mt19937_64& rng,
+                   double depth_lo = 0.05, double depth_hi = 1.0) {
   for (int attempt = 0; attempt < 200; ++attempt) {
-    const Eigen::Vector2d target = uniform_point_in_half(game, team, y_lo, y_hi, rng);
+    const Eigen::Vector2d target =
+        uniform_point_in_half(game, team, y_lo, y_hi, rng, depth_lo, depth_hi);
     const double speed = std::uniform_real_distribution<double>(speed_lo, speed_hi)(rng);
     if (auto launch = aim_ball(game, from, target, speed)) return *launch;
   }
@@ -97,6 +102,14 @@ Launch feed_launch(const RacketGame& game, int team, int receiver_y_sign, bool d
   const double y_lo = doubles ? (receiver_y_sign > 0 ? 0.0 : -w) : -w;
   const double y_hi = doubles ? (receiver_y_sign > 0 ? w : 0.0) : w;
   return draw_launch(game, from, team, y_lo, y_hi, game.feed_speed_lo, game.feed_speed_hi, rng);
+}
+
+Launch feed_to_player_launch(const RacketGame& game, int team, double receiver_y,
+                             std::mt19937_64& rng) {
+  const Eigen::Vector3d from(0, 0, game.feed_z);
+  const double spread = 0.15 * game.half_width_singles;
+  return draw_launch(game, from, team, receiver_y - spread, receiver_y + spread, game.feed_speed_lo,
+                     game.feed_speed_hi, rng, 0.35, 0.75);
 }
 
 }  // namespace olympics::sports::racket

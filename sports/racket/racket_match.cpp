@@ -159,8 +159,11 @@ void RacketMatch::start_point() {
   if (config_.mode == RacketMode::BallReturn) {
     launch = ball_return_launch(config_.game, 0, rng_);
   } else {
-    const int y_sign = start_placement(fed_slot).position.y() >= 0 ? 1 : -1;
-    launch = feed_launch(config_.game, receiving_team, y_sign, doubles, rng_);
+    const double receiver_y = start_placement(fed_slot).position.y();
+    launch =
+        config_.feed_to_player
+            ? feed_to_player_launch(config_.game, receiving_team, receiver_y, rng_)
+            : feed_launch(config_.game, receiving_team, receiver_y >= 0 ? 1 : -1, doubles, rng_);
   }
   flight_.set_state(launch.position, launch.velocity);
 }

@@ -32,6 +32,7 @@ struct RacketMatchConfig {
   TennisFormat tennis;             // used by tennis
   TableTennisFormat table_tennis;  // used by table tennis
   double max_rally_s = 10;         // no stroke for this long: the side to play loses the point
+  bool feed_to_player = true;      // each point's first ball at the receiver (else anywhere)
 };
 
 // The task observation's blocks (after the self observation), shared with `describe`.

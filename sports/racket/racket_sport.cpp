@@ -26,10 +26,15 @@ std::string RacketSport::summary() const {
 std::vector<SettingSpec> RacketSport::settings() const {
   const auto stall = SettingSpec::number(
       "max_rally_s", 10.0, "no stroke for this long: the side to play loses the point", 1, 60);
+  const auto feed = SettingSpec::choice(
+      "feed", "to_player",
+      "each point's first ball: \"to_player\" at the receiver, landing mid-depth (the seed's "
+      "feed), or \"anywhere\" on the receiving half",
+      {"to_player", "anywhere"});
   if (table_tennis_)
     return {SettingSpec::number("games_to_win", 1, "games that win the match (best of 2n-1)", 1, 4),
             SettingSpec::number("points_per_game", 11, "points that win a game, by 2", 1, 21),
-            stall};
+            stall, feed};
   return {
       SettingSpec::number("net_height", 1.0,
                           "m; the seed's 1.0 (a real net is 0.914 at the centre)", 0.5, 1.5),
@@ -38,7 +43,8 @@ std::vector<SettingSpec> RacketSport::settings() const {
       SettingSpec::number("sets_to_win", 1, "sets that win the match (best of 2n-1)", 1, 3),
       SettingSpec::number("games_per_set", 6, "games that win a set, by 2; tie-break at n-n", 1, 6),
       SettingSpec::number("tiebreak_points", 7, "points that win a tie-break game, by 2", 1, 10),
-      stall};
+      stall,
+      feed};
 }
 
 RacketMatchConfig RacketSport::config(const std::string& mode,
@@ -47,6 +53,7 @@ RacketMatchConfig RacketSport::config(const std::string& mode,
   RacketMatchConfig c;
   c.mode = racket_mode(modes_.at(mode).name);
   c.max_rally_s = s.at("max_rally_s").get<double>();
+  c.feed_to_player = s.at("feed") == "to_player";
   if (table_tennis_) {
     c.game = table_tennis_game();
     c.table_tennis.games_to_win = s.at("games_to_win");
