@@ -1,84 +1,115 @@
 #include "scripted_racket.h"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "control/drive_target.h"
+#include "control/smpl_limbs.h"
+#include "control/stroke_plan.h"
 #include "smpl_observation.h"
 
 namespace olympics::client {
 namespace {
 
 using namespace smpl;
+using control::BallSample;
+using control::BodyPose;
+using control::CourtFrame;
 
-constexpr double kReachEarly_s = 0.5;  // while walking, the arm stays at rest until this close
-
-struct SportPlay {
-  double restitution;  // of the court or table, for the prediction
-  double plane;        // hitting plane, m in front of the root
-  double ball_radius;
-  Eigen::Vector2d reach;  // where the racket meets the ball, relative to the root
+// How a sport is played: where the racket arm meets the ball best, where strokes go, how they
+// are shaped. Table tennis meets the ball close and gently, tennis further out and harder.
+// Chosen on ball-return tuning seeds 1-200 (docs/racket-sports.md); never on the benchmark's.
+struct Play {
+  Eigen::Vector3d sweet_spot;        // face centre at contact, heading frame from the root
+  double below = 0.5, above = 0.45;  // heights about the sweet spot the arm meets balls at, m
+  double home_x = 0;                 // court x the player returns to between balls
+  Eigen::Vector2d aim;               // where strokes should land (court frame, far half)
+  double net_margin = 0;             // m above the net
+  double reach_fraction = 0.9;       // of the arm's full reach
+  // How much further the trunk's lean and turn take the shoulder; 0: the arm alone reaches (a
+  // heavy racket swung from a leaning trunk topples the player).
+  double trunk_reach = 0;
+  double table_clearance = 0.12;  // a ball met over the table is at least this far above it
+  double max_back = 0;            // backswing, m along the swing's line
+  double swing_s = 0.25;          // the swing from the backswing to the ball
+  double follow = 0;              // follow-through, m
+  double max_speed = 0;           // face speed, m/s
+  // The arm is asked for where the face should be this long after the tick starts (measured:
+  // asking for the tick's end, or later, meets fewer balls).
+  double ask_ahead_s = 0.02;
+  // Gravity compensation, in multiples of the weight (control/drive_target.h: 3 holds a still
+  // arm; a swinging one met more balls with less).
+  double gravity_scale = 2;
+  double commit_s = 0.2;         // this close to the ball, the stroke is no longer re-planned
+  double settle_s = 0.5;         // the legs stop walking this long before a reachable ball
+  double walk_speed = 0.6;       // m/s the legs cover, roughly, toward a ball out of reach
+  double balance_ahead = -0.03;  // the centre of mass held this far ahead of the ankles
+  double horizon_s = 0;          // how far ahead the ball is predicted
   StepGains legs;
 };
 
-// Balance gains were found by a grid search over 12 ball-return episodes each (touches, falls):
-// the racket's weight on the outstretched arm asks for other gains than the paddle's. Step gains
-// by a random search over walks to 10 targets (reach, time, heading, falls).
-SportPlay tennis_play() {
-  SportPlay p{0.75, 0.3, 0.032, {0.3, -1.05}, {}};
-  p.legs.balance = {1.0, 2.0, 0.0, 1.0};
-  return p;
-}
-SportPlay table_play() {
-  SportPlay p{0.9, 0.35, 0.02, {0.35, -0.75}, {}};
+Play table_play() {
+  Play p;
+  p.sweet_spot = {0.45, -0.45, 0.15};
+  p.home_x = -2.0;
+  p.aim = {0.6, 0};
+  p.net_margin = 0.08;
+  p.trunk_reach = 0.12;
+  p.max_back = 0.35;
+  p.follow = 0.1;
+  p.max_speed = 4;
+  p.horizon_s = 1.5;
   p.legs.balance = {0.5, 0.5, -0.2, 2.0};
   return p;
 }
 
-struct Crossing {
-  bool found = false;
-  Eigen::Vector3d point;
-  double seconds = 0;
-};
-
-// Steps the ball (gravity, one bounce off the surface) until it crosses x = plane coming in.
-// Works in the root's frame turned to face the net (`facing` turns heading-frame vectors so),
-// which does not sway with the body as the heading frame does.
-Crossing predict_crossing(std::span<const float> o, const ScriptedRacketPolicy::Blocks& at,
-                          const SportPlay& play, double surface_z, const Eigen::Matrix3d& facing) {
-  Eigen::Vector3d p = facing * vec3(o, at.ball), v = facing * vec3(o, at.ball_velocity);
-  const double floor_z = surface_z + play.ball_radius;
-  Crossing c;
-  for (int i = 0; i < 240; ++i) {
-    const double dt = 1.0 / 120;
-    v.z() -= 9.81 * dt;
-    const Eigen::Vector3d next = p + v * dt;
-    if (next.z() < floor_z && v.z() < 0) v.z() = -play.restitution * v.z();
-    c.seconds += dt;
-    if ((p.x() - play.plane) * (next.x() - play.plane) <= 0 && v.x() < 0) {
-      c.found = true;
-      c.point = next;
-      return c;
-    }
-    p = next;
-  }
-  return c;
-}
-
-// Points the racket at `aim` (root-relative) from the right shoulder, face to the net; `swing`
-// from 0 (drawn back) to 1 (through).
-void reach(std::span<const float> o, const Eigen::Vector3d& aim, double swing, std::span<float> a) {
-  Eigen::Vector3d d = aim - body_position(o, kRShoulder);
-  if (d.norm() < 1e-6) d = Eigen::Vector3d(0, -1, 0);
-  d.normalize();
-  set_joint(a, kRShoulder, 0, std::atan2(-d.z(), -d.y()));
-  set_joint(a, kRShoulder, 2, std::asin(std::clamp(d.x(), -1.0, 1.0)) - 0.4 * swing);
-  set_joint(a, kRElbow, 0, 0);
-  set_joint(a, kRHand, 1, M_PI / 2);  // roll the face towards the net
+Play tennis_play() {
+  Play p;
+  p.sweet_spot = {0.55, -0.75, 0.25};
+  p.above = 0.6;
+  p.home_x = -11.885;
+  p.aim = {7.5, 0};
+  p.net_margin = 0.3;
+  p.max_back = 0.4;
+  p.follow = 0.2;
+  p.max_speed = 8;
+  p.horizon_s = 3.0;
+  p.legs.balance = {1.0, 2.0, 0.0, 1.0};
+  return p;
 }
 
 }  // namespace
+
+struct ScriptedRacketPolicy::Sport {
+  explicit Sport(const sports::racket::RacketGame& g)
+      : game(g),
+        play(g.on_table ? table_play() : tennis_play()),
+        path(g),
+        model(control::BodyModel::humanoid(core::HumanoidKind::Smpl, &g.equipment)),
+        arm(model,
+            control::LimbIk(model,
+                            play.trunk_reach > 0 ? control::smpl_right_arm_and_trunk()
+                                                 : control::smpl_right_arm(),
+                            g.equipment.face_centre, Eigen::Vector3d::UnitZ()),
+            play.gravity_scale) {}
+  sports::racket::RacketGame game;
+  Play play;
+  control::BallPath path;
+  control::BodyModel model;
+  control::LimbControl arm;
+  // The arm's own reach, from the shoulder to the face centre.
+  double arm_reach = control::LimbIk(model, control::smpl_right_arm(), game.equipment.face_centre,
+                                     Eigen::Vector3d::UnitZ())
+                         .reach();
+};
+
+ScriptedRacketPolicy::ScriptedRacketPolicy() = default;
+ScriptedRacketPolicy::~ScriptedRacketPolicy() = default;
+
+double ScriptedRacketPolicy::reach_error() const {
+  return sport_ ? sport_->arm.last().position_error_m : 0;
+}
 
 void ScriptedRacketPolicy::start(const MatchInfo& match) {
   if (match.sport != "tennis" && match.sport != "table_tennis")
@@ -87,42 +118,172 @@ void ScriptedRacketPolicy::start(const MatchInfo& match) {
   const ObservationLayout& l = match.observation;
   blocks_ = {l.offset("ball_position"),  l.offset("ball_velocity"), l.offset("target"),
              l.offset("court_position"), l.offset("court_heading"), l.offset("rally")};
-  table_ = match.sport == "table_tennis";
+  const bool table = match.sport == "table_tennis";
+  if (!sport_ || sport_->game.on_table != table)
+    sport_ = std::make_unique<Sport>(table ? sports::racket::table_tennis_game()
+                                           : sports::racket::tennis_game(1.0));
   control_dt_ = match.control_dt;
   legs_.reset();
+  stroke_.reset();
+  since_stroke_s_ = 1e9;
+  sport_->arm.reset();
+}
+
+void ScriptedRacketPolicy::plan(std::span<const float> o, const CourtFrame& court,
+                                const BodyPose& pose) {
+  const Play& play = sport_->play;
+  const auto& game = sport_->game;
+  const Eigen::Vector3d ball = court.point(vec3(o, blocks_.ball));
+  const Eigen::Vector3d velocity = court.vector(vec3(o, blocks_.ball_velocity));
+  const int bounced = static_cast<int>(std::lround(o[blocks_.rally + 2]));
+  const std::vector<BallSample> path =
+      sport_->path.predict(ball, velocity, play.horizon_s, bounced);
+  const Eigen::Vector3d shoulder = pose.position[kRShoulder];
+  const double reach = play.reach_fraction * sport_->arm_reach + play.trunk_reach;
+  const double face_back = game.ball.radius + game.equipment.face.half_thickness;
+  const Eigen::Vector3d spot = court.vector(play.sweet_spot);  // sweet spot from the root, court
+
+  // Where to meet the ball: after its one bounce on the own side, clear of the table. Points
+  // within reach now cost their distance from the sweet spot; others the walk to where they
+  // would be (the sweet spot at the ball), more than the legs can cover in the time left
+  // weighing most.
+  const BallSample* best = nullptr;
+  double best_cost = 1e9;
+  bool best_reachable = false;
+  for (const BallSample& s : path) {
+    if (s.own_bounces != 1 || s.other_bounces > 0 || s.time < play.commit_s) continue;
+    if (game.on_table && s.position.x() > -game.half_length - 0.03 &&
+        s.position.z() < game.surface_height + play.table_clearance)
+      continue;
+    const Eigen::Vector3d face =
+        court.to_heading_point(s.position - Eigen::Vector3d(face_back, 0, 0));
+    const double height = face.z() - play.sweet_spot.z();
+    if (height < -play.below || height > play.above) continue;
+    const bool reachable = face.x() > 0.2 && (face - shoulder).norm() <= reach;
+    double cost;
+    if (reachable) {
+      cost = 0.5 * (face - play.sweet_spot).norm();
+    } else {
+      const double walk = (s.position - spot - court.root).head<2>().norm();
+      cost = 0.5 + 0.3 * walk + 3 * std::max(0.0, walk - play.walk_speed * (s.time - 0.2));
+    }
+    if (stroke_) cost += 0.5 * std::abs(s.time - (stroke_->time_to_hit - control_dt_));
+    if (cost < best_cost) best_cost = cost, best = &s, best_reachable = reachable;
+  }
+  if (best) {
+    // The swing's line: level, toward where the ball should go (measured: more balls met than
+    // swung along the face's normal, which draws the face down under a rising ball).
+    const Eigen::Vector2d toward = (play.aim - best->position.head<2>()).normalized();
+    const Eigen::Vector3d swing(toward.x(), toward.y(), 0);
+    const auto shot = control::plan_shot(sport_->path, best->position, best->velocity, play.aim,
+                                         play.net_margin, swing);
+    if (shot) {
+      Eigen::Vector3d stance = best->position - spot;
+      stance.z() = 0;
+      stroke_ = Stroke{
+          best->time,     best->position, shot->face.normal, shot->face.direction, shot->face.speed,
+          best_reachable, stance};
+      return;
+    }
+  }
+  if (stroke_) {  // keep the stroke planned: the ball is on its way there
+    stroke_->time_to_hit -= control_dt_;
+    if (stroke_->time_to_hit < -play.commit_s) stroke_.reset();
+  }
+}
+
+void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& pose,
+                                     std::span<float> a) {
+  const Play& play = sport_->play;
+  const auto& game = sport_->game;
+  const double face_back = game.ball.radius + game.equipment.face.half_thickness;
+
+  const Eigen::Vector3d root_velocity(root_velocity_.x(), root_velocity_.y(), 0);
+  // The face's pose at time `ahead` from now: along the stroke's line, or ready.
+  auto goal_at = [&](double ahead) {
+    control::LimbGoal g;
+    if (stroke_) {
+      // Drawn back by the swing's length, then swung through the ball at the planned speed.
+      const double speed = std::clamp(stroke_->speed, 0.0, play.max_speed);
+      // No further back than the arm reaches: a goal out of reach bends the whole swing.
+      const Eigen::Vector3d contact = court.to_heading_point(stroke_->ball_at) -
+                                      court.to_heading_vector(stroke_->normal) * face_back;
+      const Eigen::Vector3d line = court.to_heading_vector(stroke_->direction);
+      const Eigen::Vector3d shoulder = pose.position[kRShoulder];
+      double back = std::min(play.max_back, speed * play.swing_s);
+      while (back > 0.02 &&
+             (contact - line * back - shoulder).norm() > play.reach_fraction * sport_->arm_reach)
+        back -= 0.02;
+      const double along = std::clamp(speed * (ahead - stroke_->time_to_hit), -back, play.follow);
+      const Eigen::Vector3d face =
+          stroke_->ball_at - stroke_->normal * face_back + stroke_->direction * along;
+      // Where it is then relative to where the root will be then (the body may still be moving);
+      // a ball out of reach yet is prepared for as seen from where the legs are taking the body.
+      CourtFrame seen_from = court;
+      if (!stroke_->reachable) seen_from.root.head<2>() = stroke_->stance.head<2>();
+      g.position = seen_from.to_heading_point(face) - root_velocity * ahead;
+      g.axis = court.to_heading_vector(stroke_->normal);
+    } else {
+      g.position = play.sweet_spot + Eigen::Vector3d(-0.1, 0, 0);
+      g.axis = court.to_heading_vector(Eigen::Vector3d::UnitX());
+    }
+    return g;
+  };
+  const control::LimbGoal now = goal_at(play.ask_ahead_s);
+  face_goal_ = now.position;
+  sport_->arm.drive(pose, now, goal_at(play.ask_ahead_s + control_dt_), control_dt_, a);
+  // The trunk held straight against the swinging arm's weight; the free arm hangs at the side.
+  static constexpr int kTorso[] = {control::kSmplTorso};
+  static constexpr int kTrunk[] = {control::kSmplTorso, control::kSmplSpine, control::kSmplChest,
+                                   control::kSmplRThorax};
+  control::hold_against_gravity(
+      sport_->model, pose,
+      play.trunk_reach > 0 ? std::span<const int>(kTorso) : std::span<const int>(kTrunk), a,
+      play.gravity_scale);
+  set_joint(a, kLShoulder, 0, -1.2);
 }
 
 void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
-  if (control_dt_ <= 0) throw std::logic_error("ScriptedRacketPolicy: act() before start()");
+  if (control_dt_ <= 0 || !sport_)
+    throw std::logic_error("ScriptedRacketPolicy: act() before start()");
   if (a.size() != kActions)
     throw std::invalid_argument("the scripted racket policy drives the SMPL humanoid (69 actions)");
   std::fill(a.begin(), a.end(), 0.0f);
-
   const Blocks& at = blocks_;
-  const double surface_z = o[at.target + 2];  // the court or table height, root-relative
-  const SportPlay play = table_ ? table_play() : tennis_play();
+  const Play& play = sport_->play;
   if (!legs_) legs_.emplace(play.legs, control_dt_);
 
-  // The heading relative to facing the net; `facing` turns heading-frame vectors to the net.
-  const double heading = std::atan2(o[at.court_heading + 1], o[at.court_heading]);
-  const Eigen::Matrix3d facing = Eigen::AngleAxisd(heading, Eigen::Vector3d::UnitZ()).matrix();
-  const Crossing crossing = predict_crossing(o, at, play, surface_z, facing);
-  const bool coming = o[at.rally + 1] > 0.5 && crossing.found;  // rally[1]: coming to my team
+  CourtFrame court;
+  court.root = {o[at.court_position], o[at.court_position + 1], o[0]};
+  court.yaw = std::atan2(o[at.court_heading + 1], o[at.court_heading]);
+  const BodyPose pose = sport_->model.pose_from_observation(o);
+  root_velocity_ = smpl::root_velocity(o);
 
-  // Legs: under the crossing point while the ball comes; otherwise back to the middle.
-  Eigen::Vector3d walk_to(0, 0, 0);  // net-facing frame
-  if (coming)
-    walk_to.y() = crossing.point.y() - play.reach.y();
-  else if (const double court_y = o[at.court_position + 1]; std::abs(court_y) > 0.5)
-    walk_to.y() = -court_y;
-  legs_->act(o, (facing.transpose() * walk_to).head<2>(), -heading, a);
+  const bool coming = o[at.rally + 1] > 0.5 && o[at.rally] < 0.5;  // to me, not struck yet
+  if (coming && stroke_ && stroke_->time_to_hit - control_dt_ < play.commit_s) {
+    // Committed: the swing is under way; the ball is met where it was planned.
+    stroke_->time_to_hit -= control_dt_;
+    if (stroke_->time_to_hit < -play.commit_s) stroke_.reset();
+  } else if (coming) {
+    plan(o, court, pose);
+  } else if (stroke_) {
+    stroke_.reset();
+    since_stroke_s_ = 0;
+  }
+  since_stroke_s_ += control_dt_;
 
-  const Eigen::Vector3d shoulder = body_position(o, kRShoulder);
-  const Eigen::Vector3d rest(play.plane, shoulder.y() - 0.6, shoulder.z());
-  if (crossing.found && (!legs_->stepping() || crossing.seconds < kReachEarly_s))
-    reach(o, facing.transpose() * crossing.point, std::clamp(crossing.seconds / 0.4, 0.0, 1.0), a);
-  else
-    reach(o, rest, 1.0, a);
+  // Legs: stand while the stroke is within reach; else walk to where the ball will be, or home.
+  Eigen::Vector3d walk(0, 0, 0);  // court frame, from the root
+  if (stroke_ && (!stroke_->reachable || stroke_->time_to_hit > play.settle_s)) {
+    walk = stroke_->stance - court.root;
+  } else if (!coming && since_stroke_s_ > 0.4) {
+    walk = Eigen::Vector3d(play.home_x, 0, 0) - court.root;
+  }
+  walk.z() = 0;
+  legs_->balance_centre_of_mass(sport_->model.centre_of_mass(pose), play.balance_ahead);
+  legs_->act(o, court.to_heading_vector(walk).head<2>(), -court.yaw, a);
+  if (!legs_->stepping()) control::hold_standing_legs(sport_->model, pose, a, play.gravity_scale);
+  drive_arm(court, pose, a);
 }
 
 }  // namespace olympics::client

@@ -1,17 +1,26 @@
 // The scripted baseline for tennis and table tennis: the yardstick that learned policies must
-// beat. It reads only the observation, finding its blocks by name:
+// beat. It plays from the observation alone, with the control toolkit (control/):
 //
-// - prediction: the ball's path is stepped forward (gravity, one bounce on the court or table) to
-//   where it crosses a plane just in front of the player;
-// - moving: while the ball comes to its side, a StepController walks the player sideways so that
-//   point falls under the racket, and turns it back to face the net; otherwise it stands (ankle
-//   and hip balance) or walks back toward the middle of its half;
-// - reach and swing: the right arm points the racket at the crossing point with the face turned
-//   to the net, drawn back while the ball is far and swung through as it arrives.
+// - prediction: the ball's path is stepped forward with the server's own flight model (drag,
+//   bounces off the court or table and the net) from the observed ball;
+// - the stroke: on that path it picks the point to meet the ball (after its bounce on the own
+//   side, within the racket arm's reach) and plans the shot to a point deep in the middle of the
+//   far half: the outgoing velocity that clears the net, and the face normal and speed that give
+//   it (control/stroke_plan.h);
+// - the arm: the face is drawn back along that normal and swung through the meeting point at the
+//   planned speed, timed to the ball; each tick the arm's joints come from inverse kinematics of
+//   the face's pose (control/limb_ik.h), with gravity compensation and velocity feed-forward as
+//   PD-target offsets (control/drive_target.h);
+// - the legs: a StepController stands (ankle/hip balance) while the ball is within reach and
+//   walks the player toward where it will be otherwise; between balls it walks back home.
 #pragma once
 
+#include <memory>
 #include <optional>
 
+#include "control/ball_path.h"
+#include "control/body_model.h"
+#include "control/limb_control.h"
 #include "policies.h"
 #include "step_controller.h"
 
@@ -19,6 +28,8 @@ namespace olympics::client {
 
 class ScriptedRacketPolicy : public Policy {
  public:
+  ScriptedRacketPolicy();
+  ~ScriptedRacketPolicy() override;
   void start(const MatchInfo& match) override;
   void act(std::span<const float> observation, std::span<float> action) override;
 
@@ -26,12 +37,37 @@ class ScriptedRacketPolicy : public Policy {
   struct Blocks {
     int ball = 0, ball_velocity = 0, target = 0, court_position = 0, court_heading = 0, rally = 0;
   };
+  // The stroke being played (court frame), for tests and tuning.
+  struct Stroke {
+    double time_to_hit = 0;     // s from this tick
+    Eigen::Vector3d ball_at;    // ball centre at contact
+    Eigen::Vector3d normal;     // face normal
+    Eigen::Vector3d direction;  // the swing's line
+    double speed = 0;           // face speed along it
+    bool reachable = false;     // from where the player stands now
+    Eigen::Vector3d stance;     // where the root should be to meet it at the sweet spot
+  };
+  const std::optional<Stroke>& stroke() const { return stroke_; }
+  // Where the face was last asked to be at the end of the tick (heading frame).
+  const Eigen::Vector3d& face_goal() const { return face_goal_; }
+  // How far the arm's inverse kinematics fell short of that goal, m.
+  double reach_error() const;
 
  private:
+  struct Sport;
+  void plan(std::span<const float> o, const control::CourtFrame& court,
+            const control::BodyPose& pose);
+  void drive_arm(const control::CourtFrame& court, const control::BodyPose& pose,
+                 std::span<float> a);
+
   Blocks blocks_;
-  bool table_ = false;
+  std::unique_ptr<Sport> sport_;
   double control_dt_ = 0;
   std::optional<StepController> legs_;
+  std::optional<Stroke> stroke_;
+  Eigen::Vector3d face_goal_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d root_velocity_ = Eigen::Vector3d::Zero();  // heading frame, this tick
+  double since_stroke_s_ = 1e9;                              // time since the last planned contact
 };
 
 }  // namespace olympics::client
