@@ -109,7 +109,7 @@ Launch feed_to_player_launch(const RacketGame& game, int team, double receiver_y
   const Eigen::Vector3d from(0, 0, game.feed_z);
   const double spread = 0.15 * game.half_width_singles;
   return draw_launch(game, from, team, receiver_y - spread, receiver_y + spread, game.feed_speed_lo,
-                     game.feed_speed_hi, rng, 0.35, 0.75);
+                     game.feed_speed_hi, rng, 0.55, 0.9);
 }
 
 }  // namespace olympics::sports::racket

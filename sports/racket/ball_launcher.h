@@ -33,7 +33,7 @@ Launch ball_return_launch(const RacketGame& game, int team, std::mt19937_64& rng
 Launch feed_launch(const RacketGame& game, int team, int receiver_y_sign, bool doubles,
                    std::mt19937_64& rng);
 // A point's first ball toward the receiving player, as the seed feeds it (straight at the player):
-// it lands in the middle of the half's depth (35-75% from the net), within 15% of the half's
+// it lands deep in the half (55-90% of its length from the net), within 15% of the half's
 // width of the receiver's line `receiver_y`.
 Launch feed_to_player_launch(const RacketGame& game, int team, double receiver_y,
                              std::mt19937_64& rng);

@@ -28,7 +28,7 @@ std::vector<SettingSpec> RacketSport::settings() const {
       "max_rally_s", 10.0, "no stroke for this long: the side to play loses the point", 1, 60);
   const auto feed = SettingSpec::choice(
       "feed", "to_player",
-      "each point's first ball: \"to_player\" at the receiver, landing mid-depth (the seed's "
+      "each point's first ball: \"to_player\" at the receiver, landing deep (the seed's "
       "feed), or \"anywhere\" on the receiving half",
       {"to_player", "anywhere"});
   if (table_tennis_)
