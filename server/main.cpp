@@ -106,8 +106,10 @@ int describe_one(const sports::Sport& sport, const std::string& mode_arg) {
     std::printf("  reward = weighted sum of the terms (each sent by name):\n");
     for (const auto& t : l.rewards)
       std::printf("    %-12s x %-5g %s\n", t.name.c_str(), t.weight, t.meaning.c_str());
-    std::printf("  referee calls (info.events[].call):\n");
-    for (const auto& c : l.calls) std::printf("    %-12s %s\n", c.name.c_str(), c.meaning.c_str());
+    std::printf(
+        "  referee calls (info.events[].call; * announced: olympics-agent --calls prints them):\n");
+    for (const auto& c : l.calls)
+      std::printf("   %s%-12s %s\n", c.announced ? "*" : " ", c.name.c_str(), c.meaning.c_str());
   }
   return 0;
 }

@@ -30,7 +30,8 @@ nlohmann::json mode_json(const Sport& sport, const ModeSpec& spec) {
   nlohmann::json rewards = nlohmann::json::array(), calls = nlohmann::json::array();
   for (const auto& t : l.rewards)
     rewards.push_back({{"name", t.name}, {"weight", t.weight}, {"meaning", t.meaning}});
-  for (const auto& c : l.calls) calls.push_back({{"name", c.name}, {"meaning", c.meaning}});
+  for (const auto& c : l.calls)
+    calls.push_back({{"name", c.name}, {"meaning", c.meaning}, {"announced", c.announced}});
   return {{"name", spec.name},
           {"summary", spec.summary},
           {"slot_teams", spec.slot_teams},

@@ -88,11 +88,16 @@ struct RewardTerm {
 };
 
 // A call the referee can make; every event in a tick's info["events"] names one
-// (framework/referee_events.h has the one shape every event takes).
+// (framework/referee_events.h has the one shape every event takes). `announced` calls are the
+// decisions people follow (a point, a goal, a knock-down: olympics-agent --calls prints them);
+// the rest come many a second (contacts, hits, punches) or are bookkeeping (falls).
 struct RefereeCall {
   std::string name;
   std::string meaning;
+  bool announced = false;
 };
+// For call lists: {"goal", "...", kAnnounced}.
+inline constexpr bool kAnnounced = true;
 
 // How every SMPL sport's observation starts (the self observation) and what its action is.
 inline constexpr int kSmplSelfObservation = 358;

@@ -52,14 +52,18 @@ std::vector<RefereeCall> basketball_calls() {
   return {
       {"basket",
        "the ball went down through the rim (slot: the shooter; points, team, counted, x and y "
-       "of the release)"},
+       "of the release)",
+       kAnnounced},
       {"not_cleared",
        "a basket by a side that had not cleared the ball behind the arc: no points "
-       "(slot: the shooter)"},
-      {"out", "the ball touched the floor outside the lines (last_touch_slot)"},
-      {"shot_clock", "the side with the ball did not get a shot to the basket in time (team)"},
-      {"restart", "play restarts (kind: check_ball or after_basket; team, x, y)"},
-      {"miss", "free throw: the ball came down on the floor or left the court without a basket"},
+       "(slot: the shooter)",
+       kAnnounced},
+      {"out", "the ball touched the floor outside the lines (last_touch_slot)", kAnnounced},
+      {"shot_clock", "the side with the ball did not get a shot to the basket in time (team)",
+       kAnnounced},
+      {"restart", "play restarts (kind: check_ball or after_basket; team, x, y)", kAnnounced},
+      {"miss", "free throw: the ball came down on the floor or left the court without a basket",
+       kAnnounced},
       {"fall", "a player fell (body)"},
       {"stood_up", "team play with falls: stand_up: a player down 2 s was stood up where it lay"}};
 }

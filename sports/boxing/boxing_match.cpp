@@ -53,11 +53,11 @@ std::vector<LayoutBlock> boxing_task_layout() {
 
 std::vector<RefereeCall> boxing_calls() {
   return {{"punch", "a scoring punch (slot, target_slot, body, glove, force_n)"},
-          {"knockdown", "a boxer is down during a round: the count starts (slot)"},
-          {"up", "the boxer beat the count (slot)"},
-          {"knockout", "not up before the count's end: the bout is over (slot)"},
-          {"round_end", "the bell: the round's card (round, card_0, card_1)"},
-          {"round_start", "the bell after the rest (round)"},
+          {"knockdown", "a boxer is down during a round: the count starts (slot)", kAnnounced},
+          {"up", "the boxer beat the count (slot)", kAnnounced},
+          {"knockout", "not up before the count's end: the bout is over (slot)", kAnnounced},
+          {"round_end", "the bell: the round's card (round, card_0, card_1)", kAnnounced},
+          {"round_start", "the bell after the rest (round)", kAnnounced},
           {"fall", "a boxer fell (body)"}};
 }
 

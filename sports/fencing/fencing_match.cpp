@@ -41,10 +41,11 @@ std::vector<LayoutBlock> fencing_task_layout() {
 
 std::vector<RefereeCall> fencing_calls() {
   return {{"hit", "a tip met a valid target with enough force (slot, target_slot, body, force_n)"},
-          {"point", "a touch scores for slot (reason: touch, double, fall)"},
+          {"point", "a touch scores for slot (reason: touch, double, fall)", kAnnounced},
           {"halt",
            "play stopped without a score (reason: off_piste, fall, idle, double_annulled; "
-           "culprit_slot)"},
+           "culprit_slot)",
+           kAnnounced},
           {"fall", "a fencer fell (body)"}};
 }
 

@@ -76,9 +76,9 @@ std::vector<RefereeCall> racket_calls() {
           {"net", "the ball touched the net"},
           {"dead_ball", "the ball stopped: it counts as bouncing again where it lies"},
           {"body_touch", "the ball touched a player's body"},
-          {"point", "a point is decided: winner_team, reason, culprit_slot"},
+          {"point", "a point is decided: winner_team, reason, culprit_slot", kAnnounced},
           {"fall", "a player fell (body): that side loses the point"},
-          {"let", "both sides fell at once: the point is played again"},
+          {"let", "both sides fell at once: the point is played again", kAnnounced},
           {"return_in", "ball return: the return landed in; the next ball comes"}};
 }
 

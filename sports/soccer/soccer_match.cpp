@@ -46,18 +46,22 @@ std::vector<LayoutBlock> soccer_task_layout(const ModeSpec& mode) {
 }
 
 std::vector<RefereeCall> soccer_calls() {
-  return {{"goal",
-           "the whole ball crossed the goal line in the goal (slot: scorer, team, "
-           "assist_slot, own_goal)"},
-          {"out", "the whole ball left the field (line: touch or goal; last_touch_slot)"},
-          {"restart", "play restarts (kind: throw_in, free_kick, goal_kick, corner; team, x, y)"},
-          {"kick_off", "play (re)starts from the centre (team: the side that kicks off)"},
-          {"half_time", "the teams change ends (half)"},
-          {"encroachment",
-           "an opponent played a restart before the taking side: taken again "
-           "(culprit_slot)"},
-          {"stood_up", "a player down for the set time was stood up where it lay"},
-          {"fall", "a player fell (body)"}};
+  return {
+      {"goal",
+       "the whole ball crossed the goal line in the goal (slot: scorer, team, "
+       "assist_slot, own_goal)",
+       kAnnounced},
+      {"out", "the whole ball left the field (line: touch or goal; last_touch_slot)", kAnnounced},
+      {"restart", "play restarts (kind: throw_in, free_kick, goal_kick, corner; team, x, y)",
+       kAnnounced},
+      {"kick_off", "play (re)starts from the centre (team: the side that kicks off)", kAnnounced},
+      {"half_time", "the teams change ends (half)", kAnnounced},
+      {"encroachment",
+       "an opponent played a restart before the taking side: taken again "
+       "(culprit_slot)",
+       kAnnounced},
+      {"stood_up", "a player down for the set time was stood up where it lay"},
+      {"fall", "a player fell (body)"}};
 }
 
 SoccerMatch::SoccerMatch(const SoccerConfig& config, const ModeSpec& mode, Layout layout,
