@@ -224,7 +224,8 @@ int view(const std::string& file, const std::string& host, int port, const std::
   const server::SceneTrack track = server::decode_scene(server::unpack_scene(bytes, scene));
   std::printf("%s: %s %s, %zu frames (%.1f s)\n", scene.c_str(),
               track.header.value("sport", "?").c_str(), track.header.value("mode", "?").c_str(),
-              track.frames.size(), track.frames.size() / double(core::kControlHz));
+              track.frames.size(),
+              track.frames.size() / track.header.value("control_hz", double(core::kControlHz)));
   if (!export_to.empty()) {
     std::ofstream out(export_to, std::ios::binary);
     out << server::export_viewer_page(bytes);

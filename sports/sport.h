@@ -7,6 +7,7 @@
 // the observation layout and the state hash).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -158,6 +159,9 @@ class SportMatch {
   // The mode's layout (the sizes above derive from it) and the time limit in force.
   virtual const Layout& layout() const = 0;
   virtual double time_limit_s() const = 0;
+  // Seconds of match time per tick: the control rate the server announces (1 / control_dt()).
+  virtual double control_dt() const = 0;
+  int control_hz() const { return static_cast<int>(std::lround(1.0 / control_dt())); }
 
   // Observation of tick `tick()` for one slot (self observation, then the task's).
   virtual void observe(int slot, std::span<float> out) const = 0;

@@ -73,7 +73,6 @@ BasketballMatch::BasketballMatch(const BasketballConfig& config, const ModeSpec&
     : SmplMatch(mode, std::move(layout), settings),
       config_(config),
       team_play_(is_team_play(mode.name)),
-      rng_(settings.seed),
       referee_(config.court, config.rules, mode.slot_teams) {
   config_.court.build(scene().world());
   for (int s = 0; s < slot_count(); ++s) add_player(player_model(), {});
@@ -82,13 +81,13 @@ BasketballMatch::BasketballMatch(const BasketballConfig& config, const ModeSpec&
   root_before_.resize(slot_count());
   ball_->sense_contacts();
   if (team_play_) {
-    const int first = std::uniform_int_distribution<int>(0, 1)(rng_);
+    const int first = std::uniform_int_distribution<int>(0, 1)(rng());
     const Restart r = referee_.start(first, 0.0);
     log_stoppage({"start", std::nullopt, -1, r});
     carry_out(r);
   } else {
     const Eigen::Vector2d spot(config_.court.free_throw_line_x() - kBehindLine, 0);
-    const core::RootPlacement start = jittered_start(spot, 0.0, rng_);
+    const core::RootPlacement start = jittered_start(spot, 0.0, rng());
     reset_player(0, start);
     present_to(0, start);
   }
@@ -102,7 +101,7 @@ Eigen::Vector3d BasketballMatch::target(int basket) const {
 
 core::RootPlacement BasketballMatch::placement(const Eigen::Vector2d& at,
                                                const Eigen::Vector2d& facing) {
-  return jittered_start(at, std::atan2(facing.y(), facing.x()), rng_);
+  return jittered_start(at, std::atan2(facing.y(), facing.x()), rng());
 }
 
 void BasketballMatch::present_to(int slot, const core::RootPlacement& at) {

@@ -87,7 +87,6 @@ class BasketballMatch : public SmplMatch {
 
   BasketballConfig config_;
   bool team_play_;
-  std::mt19937_64 rng_;
   std::unique_ptr<equipment::Ball> ball_;
   BasketballReferee referee_;
   Eigen::Vector3d present_ = Eigen::Vector3d::Zero();

@@ -63,10 +63,7 @@ std::vector<RefereeCall> boxing_calls() {
 
 BoxingMatch::BoxingMatch(const BoxingConfig& config, const ModeSpec& mode, Layout layout,
                          const MatchSettings& settings)
-    : SmplMatch(mode, std::move(layout), settings),
-      config_(config),
-      rng_(settings.seed),
-      referee_(config.rules) {
+    : SmplMatch(mode, std::move(layout), settings), config_(config), referee_(config.rules) {
   const core::ModelSpec& spec = boxer_model(config_.both_gloves);
   hands_ = {spec.body_index("L_Hand"), spec.body_index("R_Hand")};
   for (int h = 0; h < 2; ++h) glove_centre_[h] = glove_centre(spec, hands_[h]);
@@ -82,7 +79,7 @@ BoxingMatch::BoxingMatch(const BoxingConfig& config, const ModeSpec& mode, Layou
 }
 
 core::RootPlacement BoxingMatch::corner(int b) {
-  return combat::jittered_start(b, config_.ring.start, rng_);
+  return combat::jittered_start(b, config_.ring.start, rng());
 }
 
 Eigen::Vector3d BoxingMatch::glove_position(int slot, int hand) const {

@@ -15,6 +15,7 @@ SmplMatch::SmplMatch(const ModeSpec& mode, Layout layout, const MatchSettings& s
       layout_(std::move(layout)),
       reward_names_(layout_.reward_names()),
       scene_(scene),
+      rng_(settings.seed),
       time_limit_ticks_(static_cast<int>(std::lround(settings.time_limit_s / scene.control_dt))) {
   if (layout_.observation.empty() || layout_.observation.front().name != "self")
     throw std::logic_error("an SMPL match's observation begins with the self block");

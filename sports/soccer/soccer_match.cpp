@@ -69,7 +69,6 @@ SoccerMatch::SoccerMatch(const SoccerConfig& config, const ModeSpec& mode, Layou
     : SmplMatch(mode, std::move(layout), settings),
       config_(config),
       kind_(soccer_mode(mode.name)),
-      rng_(settings.seed),
       guard_(equipment::soccer_ball().radius),
       referee_(config.field, config.rules, mode.slot_teams, equipment::soccer_ball().radius) {
   config_.field.build(scene().world());
@@ -85,7 +84,7 @@ SoccerMatch::SoccerMatch(const SoccerConfig& config, const ModeSpec& mode, Layou
   root_before_.resize(slot_count());
   for (int s = 0; s < slot_count(); ++s) add_player(player_model(), {});
   if (kind_ == SoccerMode::TeamPlay) {
-    const int first = std::uniform_int_distribution<int>(0, 1)(rng_);
+    const int first = std::uniform_int_distribution<int>(0, 1)(rng());
     referee_.start(first, 0.0);
     kick_off_positions(first);
     nlohmann::json e = referee_event("kick_off", 0.0);
@@ -100,7 +99,7 @@ SoccerMatch::SoccerMatch(const SoccerConfig& config, const ModeSpec& mode, Layou
 }
 
 core::RootPlacement SoccerMatch::placement(const Eigen::Vector2d& at, int facing) {
-  return jittered_start(at, facing > 0 ? 0.0 : M_PI, rng_);
+  return jittered_start(at, facing > 0 ? 0.0 : M_PI, rng());
 }
 
 int SoccerMatch::attack(int slot) const {
