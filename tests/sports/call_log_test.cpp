@@ -40,14 +40,14 @@ TEST(CallLog, PrintsBasketballsCallsAndLeavesOutTheRest) {
   EXPECT_EQ(lines[2], "tick 240: miss slot 0  2-0");
 }
 
-// The agent's list before the sports announced their own calls: every other sport prints what
-// it printed then, no more and no less.
+// The agent's list before the sports announced their own calls: the sports there were then,
+// basketball aside, print what they printed then, no more and no less.
 TEST(CallLog, OtherSportsAnnounceWhatTheAgentPrintedBefore) {
   const std::set<std::string> printed_before = {
       "point",       "let",  "halt", "knockdown", "up",       "knockout",  "round_end",
       "round_start", "goal", "out",  "restart",   "kick_off", "half_time", "encroachment"};
-  for (const auto& name : sports::sport_names()) {
-    if (name == "basketball") continue;
+  for (const std::string name :
+       {"sandbox", "tennis", "table_tennis", "fencing", "boxing", "soccer"}) {
     const auto& sport = sports::sport_or_throw(name);
     for (const auto& mode : sport.modes().names()) {
       const auto announced = announced_calls(name, mode);
