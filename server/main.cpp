@@ -95,6 +95,8 @@ int describe_one(const sports::Sport& sport, const std::string& mode_arg) {
     for (const auto& b : l.observation) {
       std::printf("  obs[%d:%d] %-16s (%s) %s\n", at, at + b.size, b.name.c_str(), b.units.c_str(),
                   b.meaning.c_str());
+      for (const auto& f : b.fields)
+        std::printf("    obs[%d:%d] %s\n", at + f.offset, at + f.offset + f.size, f.name.c_str());
       at += b.size;
     }
     at = 0;

@@ -20,6 +20,11 @@ nlohmann::json blocks_json(const std::vector<LayoutBlock>& blocks, bool with_bou
       const double bound = observation_bound(b);
       j["bound"] = std::isinf(bound) ? nlohmann::json(nullptr) : nlohmann::json(bound);
     }
+    if (!b.fields.empty()) {
+      j["fields"] = nlohmann::json::array();
+      for (const auto& f : b.fields)
+        j["fields"].push_back({{"name", f.name}, {"offset", f.offset}, {"size", f.size}});
+    }
     out.push_back(std::move(j));
   }
   return out;
@@ -46,7 +51,7 @@ nlohmann::json mode_json(const Sport& sport, const ModeSpec& spec) {
 }  // namespace
 
 double observation_bound(const LayoutBlock& block) {
-  if (block.name == smpl_self_observation_block().name) return core::kObservationClamp;
+  if (block.name == kSelfBlock) return core::kObservationClamp;
   return std::numeric_limits<double>::infinity();
 }
 

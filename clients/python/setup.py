@@ -90,8 +90,10 @@ sources = ([os.path.join(HERE, f) for f in ("bindings.cpp", "vector_bindings.cpp
 extension = Extension(
     "smpl_olympics._client",
     sources=sources,  # absolute: objects then stay under build/
+    # sports/core: self_observation_layout.h alone (header-only), which the policies read by
     include_dirs=[os.path.join(ROOT, d) for d in ("lcmtypes", "protocol", "clients/cpp",
-                                                  "clients/agent", "clients/python")] +
+                                                  "clients/agent", "clients/python",
+                                                  "sports/core")] +
                  [pybind11_include(), "/usr/include/eigen3"],
     extra_compile_args=["-std=c++20", "-O2", "-fvisibility=hidden",
                         *[f for f in cflags if not f.startswith("-I")]],

@@ -12,7 +12,7 @@ namespace olympics::sports::basketball {
 namespace {
 
 const core::ModelSpec& player_model() {
-  static const core::ModelSpec spec = core::load_humanoid(core::HumanoidKind::SmplX);
+  static const core::ModelSpec spec = core::load_humanoid(kHumanoid);
   return spec;
 }
 

@@ -35,6 +35,9 @@ struct BasketballConfig {
   bool stand_up = true;           // team play: a player down 2 s is stood up where it lies
 };
 
+// The humanoid basketball plays, chosen here once: the SMPL-X with fingers, which hold the ball.
+inline constexpr core::HumanoidKind kHumanoid = core::HumanoidKind::SmplX;
+
 bool is_team_play(const std::string& mode);
 std::vector<LayoutBlock> basketball_task_layout(const ModeSpec& mode);
 std::vector<RefereeCall> basketball_calls();
