@@ -3,7 +3,6 @@
 #include <cmath>
 #include <limits>
 
-#include "core/control_rate.h"
 #include "core/self_observation.h"
 #include "registry.h"
 
@@ -30,6 +29,14 @@ nlohmann::json blocks_json(const std::vector<LayoutBlock>& blocks, bool with_bou
   return out;
 }
 
+// The control rate a match of the mode runs at, with the default settings (a match's own: its
+// scene's).
+int control_hz(const Sport& sport, const std::string& mode) {
+  MatchSettings settings;
+  settings.mode = mode;
+  return sport.create(settings)->control_hz();
+}
+
 nlohmann::json mode_json(const Sport& sport, const ModeSpec& spec) {
   const Layout l = sport.layout(spec.name);
   nlohmann::json rewards = nlohmann::json::array(), calls = nlohmann::json::array();
@@ -42,6 +49,7 @@ nlohmann::json mode_json(const Sport& sport, const ModeSpec& spec) {
           {"slot_teams", spec.slot_teams},
           {"obs_size", l.observation_size()},
           {"action_size", l.action_size()},
+          {"control_hz", control_hz(sport, spec.name)},
           {"observation", blocks_json(l.observation, true)},
           {"action", blocks_json(l.action, false)},
           {"rewards", std::move(rewards)},
@@ -70,7 +78,7 @@ nlohmann::json describe_sport(const Sport& sport, const std::string& mode) {
   return {{"name", sport.name()},
           {"summary", sport.summary()},
           {"default_time_limit_s", sport.default_time_limit_s()},
-          {"control_hz", core::kControlHz},
+          {"control_hz", control_hz(sport, sport.modes().all().front().name)},
           {"settings", std::move(settings)},
           {"modes", std::move(modes)}};
 }
