@@ -12,6 +12,8 @@ namespace olympics::bench {
 
 // The registry: one line per benchmark, naming the command its file defines
 // (BenchCommand <name>_command(CLI::App&) in namespace olympics::bench), in --help's order.
+// Every line ends in a backslash, so a new benchmark is one added line.
+// clang-format off
 #define OLYMPICS_BENCHMARKS(X) \
   X(physics)                   \
   X(server)                    \
@@ -20,7 +22,9 @@ namespace olympics::bench {
   X(basketball)                \
   X(combat)                    \
   X(soak)                      \
-  X(vector)
+  X(vector)                    \
+  /* the list's end */
+// clang-format on
 
 #define OLYMPICS_DECLARE_BENCHMARK(name) BenchCommand name##_command(CLI::App& app);
 OLYMPICS_BENCHMARKS(OLYMPICS_DECLARE_BENCHMARK)

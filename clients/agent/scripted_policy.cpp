@@ -7,14 +7,18 @@ namespace olympics::client {
 // The registry: one line per sport with a scripted baseline, naming the factory its file defines
 // (std::unique_ptr<Policy> make_scripted_<baseline>() in namespace olympics::client, in
 // clients/agent/scripted_<baseline>.cpp, which the client build picks up by its name). Sports
-// that play alike share a baseline (tennis and table tennis: racket).
+// that play alike share a baseline (tennis and table tennis: racket). Every line ends in a
+// backslash, so a new baseline is one added line.
+// clang-format off
 #define OLYMPICS_SCRIPTED_BASELINES(X) \
   X(tennis, racket)                    \
   X(table_tennis, racket)              \
   X(fencing, fencing)                  \
   X(boxing, boxing)                    \
   X(soccer, soccer)                    \
-  X(basketball, basketball)
+  X(basketball, basketball)            \
+  /* the list's end */
+// clang-format on
 
 #define OLYMPICS_DECLARE_BASELINE(sport, baseline) \
   std::unique_ptr<Policy> make_scripted_##baseline();
