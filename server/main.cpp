@@ -95,6 +95,8 @@ int describe_one(const sports::Sport& sport, const std::string& mode_arg) {
     for (const auto& b : l.observation) {
       std::printf("  obs[%d:%d] %-16s (%s) %s\n", at, at + b.size, b.name.c_str(), b.units.c_str(),
                   b.meaning.c_str());
+      for (const auto& f : b.fields)
+        std::printf("    obs[%d:%d] %s\n", at + f.offset, at + f.offset + f.size, f.name.c_str());
       at += b.size;
     }
     at = 0;
@@ -106,8 +108,10 @@ int describe_one(const sports::Sport& sport, const std::string& mode_arg) {
     std::printf("  reward = weighted sum of the terms (each sent by name):\n");
     for (const auto& t : l.rewards)
       std::printf("    %-12s x %-5g %s\n", t.name.c_str(), t.weight, t.meaning.c_str());
-    std::printf("  referee calls (info.events[].call):\n");
-    for (const auto& c : l.calls) std::printf("    %-12s %s\n", c.name.c_str(), c.meaning.c_str());
+    std::printf(
+        "  referee calls (info.events[].call; * announced: olympics-agent --calls prints them):\n");
+    for (const auto& c : l.calls)
+      std::printf("   %s%-12s %s\n", c.announced ? "*" : " ", c.name.c_str(), c.meaning.c_str());
   }
   return 0;
 }
@@ -222,7 +226,8 @@ int view(const std::string& file, const std::string& host, int port, const std::
   const server::SceneTrack track = server::decode_scene(server::unpack_scene(bytes, scene));
   std::printf("%s: %s %s, %zu frames (%.1f s)\n", scene.c_str(),
               track.header.value("sport", "?").c_str(), track.header.value("mode", "?").c_str(),
-              track.frames.size(), track.frames.size() / double(core::kControlHz));
+              track.frames.size(),
+              track.frames.size() / track.header.value("control_hz", double(core::kControlHz)));
   if (!export_to.empty()) {
     std::ofstream out(export_to, std::ios::binary);
     out << server::export_viewer_page(bytes);

@@ -4,7 +4,6 @@
 #include <cstdio>
 
 #include "channels.h"
-#include "core/control_rate.h"
 #include "olympics/error_t.hpp"
 #include "olympics/join_reply_t.hpp"
 #include "olympics/match_start_t.hpp"
@@ -21,7 +20,6 @@ MatchRuntime::Clock::duration seconds(double s) {
   return std::chrono::duration_cast<MatchRuntime::Clock::duration>(Seconds(s));
 }
 
-constexpr double kRealtimePeriod = core::kControlDt;
 constexpr double kMaxResendGapS = 0.25;
 
 }  // namespace
@@ -50,7 +48,7 @@ MatchRuntime::MatchRuntime(MatchIdentity identity, RuntimeSettings settings,
   d.action_size = game_->action_size();
   d.obs_channel = protocol::obs_channel(identity_.match_id);
   d.action_channel = protocol::action_channel(identity_.match_id);
-  d.control_hz = core::kControlHz;
+  d.control_hz = static_cast<std::int16_t>(game_->control_hz());  // the match's own rate
   d.time_limit_s = static_cast<float>(game_->time_limit_s());
   d.options = identity_.settings.options.dump();
   for (const auto& block : game_->layout().observation) {
@@ -231,7 +229,7 @@ void MatchRuntime::start(Clock::time_point now) {
   tick_deadline_ = now + seconds(settings_.action_deadline_s);
   resend_gap_s_ = settings_.resend_interval_s;
   next_resend_ = now + seconds(resend_gap_s_);
-  next_realtime_tick_ = now + seconds(kRealtimePeriod);
+  next_realtime_tick_ = now + seconds(game_->control_dt());
   publish_observations(all_clients());
 }
 
@@ -322,7 +320,7 @@ void MatchRuntime::on_actions(const olympics::action_batch_t& batch, Clock::time
                  "action for tick " + std::to_string(batch.tick) + " arrived at tick " +
                      std::to_string(tick) + " and was ignored");
   }
-  if (identity_.realtime && batch.tick < tick - core::kControlHz)
+  if (identity_.realtime && batch.tick < tick - game_->control_hz())
     return error(batch.client_id, "STALE_TICK",
                  "action for tick " + std::to_string(batch.tick) +
                      " is over a second old at tick " + std::to_string(tick) + " and was ignored");
@@ -358,7 +356,7 @@ MatchRuntime::Clock::time_point MatchRuntime::poll(Clock::time_point now) {
   if (identity_.realtime) {
     while (phase_ == Phase::Running && now >= next_realtime_tick_) {
       advance(now);
-      next_realtime_tick_ += seconds(kRealtimePeriod);
+      next_realtime_tick_ += seconds(game_->control_dt());
     }
     return next_realtime_tick_;
   }

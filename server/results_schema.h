@@ -1,7 +1,6 @@
-// The results schema, shared by the SQLite and PostgreSQL stores.
+// The results schema, shared by the SQLite and PostgreSQL stores: SQL text only (the store reads
+// its rows into StoredMatch, results_store.cpp).
 #pragma once
-
-#include "results_store.h"
 
 namespace olympics::server {
 
@@ -51,29 +50,12 @@ inline constexpr const char* kResultsAddedColumns[][2] = {
     {"options", "TEXT NOT NULL DEFAULT '{}'"},  // protocol 3: the sport's settings in force
 };
 
-// Both stores read rows through these, so the column order is written once. Row is anything with
-// text(col), integer(col) and real(col).
+// Both stores read rows in this column order (results_store.cpp: match_from_row(),
+// participant_from_row()), so it is written once.
 inline constexpr const char* kSelectMatches =
     "SELECT match_id, server_id, server_version, sport, mode, seed, realtime, ticks, wall_time_s, "
     "reason, winner_team, scores, info, finished_at_unix, options FROM matches ";
 inline constexpr const char* kSelectParticipants =
     "SELECT slot, team, agent, policy, policy_version FROM participants ";
-
-template <typename Row>
-StoredMatch match_from_row(const Row& q) {
-  StoredMatch m;
-  m.match_id = q.text(0), m.server_id = q.text(1), m.server_version = q.text(2);
-  m.sport = q.text(3), m.mode = q.text(4), m.seed = q.integer(5), m.realtime = q.integer(6) != 0;
-  m.ticks = static_cast<int>(q.integer(7)), m.wall_time_s = q.real(8), m.reason = q.text(9);
-  m.winner_team = static_cast<int>(q.integer(10)), m.scores = scores_from_text(q.text(11));
-  m.info = q.text(12), m.finished_at_unix = q.integer(13), m.options = q.text(14);
-  return m;
-}
-
-template <typename Row>
-StoredParticipant participant_from_row(const Row& p) {
-  return {static_cast<int>(p.integer(0)), static_cast<int>(p.integer(1)), p.text(2), p.text(3),
-          p.text(4)};
-}
 
 }  // namespace olympics::server

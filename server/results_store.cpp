@@ -10,13 +10,29 @@
 namespace olympics::server {
 namespace {
 
-// A row of text values, read the way match_from_row() wants.
+// A row of text values, as the SQL layer returns it.
 struct TextRow {
   const sql::SqlDatabase::Row& r;
   std::string text(int c) const { return r[c]; }
   std::int64_t integer(int c) const { return std::stoll(r[c]); }
   double real(int c) const { return std::stod(r[c]); }
 };
+
+// Columns in kSelectMatches' and kSelectParticipants' order.
+StoredMatch match_from_row(const TextRow& q) {
+  StoredMatch m;
+  m.match_id = q.text(0), m.server_id = q.text(1), m.server_version = q.text(2);
+  m.sport = q.text(3), m.mode = q.text(4), m.seed = q.integer(5), m.realtime = q.integer(6) != 0;
+  m.ticks = static_cast<int>(q.integer(7)), m.wall_time_s = q.real(8), m.reason = q.text(9);
+  m.winner_team = static_cast<int>(q.integer(10)), m.scores = scores_from_text(q.text(11));
+  m.info = q.text(12), m.finished_at_unix = q.integer(13), m.options = q.text(14);
+  return m;
+}
+
+StoredParticipant participant_from_row(const TextRow& p) {
+  return {static_cast<int>(p.integer(0)), static_cast<int>(p.integer(1)), p.text(2), p.text(3),
+          p.text(4)};
+}
 
 }  // namespace
 

@@ -10,8 +10,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/control_rate.h"
-
 namespace olympics::server {
 namespace {
 
@@ -51,7 +49,7 @@ std::string SceneEncoder::header(const sports::SportMatch& game, const std::stri
   h["format"] = "olympics-scene";
   h["version"] = 1;
   h["sport"] = sport;
-  h["control_hz"] = core::kControlHz;
+  h["control_hz"] = game.control_hz();
   h["slots"] = game.slot_count();
   h["team_count"] = game.team_count();
   h["reward_terms"] = game.reward_terms();

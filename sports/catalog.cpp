@@ -3,7 +3,6 @@
 #include <cmath>
 #include <limits>
 
-#include "core/control_rate.h"
 #include "core/self_observation.h"
 #include "registry.h"
 
@@ -20,9 +19,22 @@ nlohmann::json blocks_json(const std::vector<LayoutBlock>& blocks, bool with_bou
       const double bound = observation_bound(b);
       j["bound"] = std::isinf(bound) ? nlohmann::json(nullptr) : nlohmann::json(bound);
     }
+    if (!b.fields.empty()) {
+      j["fields"] = nlohmann::json::array();
+      for (const auto& f : b.fields)
+        j["fields"].push_back({{"name", f.name}, {"offset", f.offset}, {"size", f.size}});
+    }
     out.push_back(std::move(j));
   }
   return out;
+}
+
+// The control rate a match of the mode runs at, with the default settings (a match's own: its
+// scene's).
+int control_hz(const Sport& sport, const std::string& mode) {
+  MatchSettings settings;
+  settings.mode = mode;
+  return sport.create(settings)->control_hz();
 }
 
 nlohmann::json mode_json(const Sport& sport, const ModeSpec& spec) {
@@ -30,12 +42,14 @@ nlohmann::json mode_json(const Sport& sport, const ModeSpec& spec) {
   nlohmann::json rewards = nlohmann::json::array(), calls = nlohmann::json::array();
   for (const auto& t : l.rewards)
     rewards.push_back({{"name", t.name}, {"weight", t.weight}, {"meaning", t.meaning}});
-  for (const auto& c : l.calls) calls.push_back({{"name", c.name}, {"meaning", c.meaning}});
+  for (const auto& c : l.calls)
+    calls.push_back({{"name", c.name}, {"meaning", c.meaning}, {"announced", c.announced}});
   return {{"name", spec.name},
           {"summary", spec.summary},
           {"slot_teams", spec.slot_teams},
           {"obs_size", l.observation_size()},
           {"action_size", l.action_size()},
+          {"control_hz", control_hz(sport, spec.name)},
           {"observation", blocks_json(l.observation, true)},
           {"action", blocks_json(l.action, false)},
           {"rewards", std::move(rewards)},
@@ -45,7 +59,7 @@ nlohmann::json mode_json(const Sport& sport, const ModeSpec& spec) {
 }  // namespace
 
 double observation_bound(const LayoutBlock& block) {
-  if (block.name == smpl_self_observation_block().name) return core::kObservationClamp;
+  if (block.name == kSelfBlock) return core::kObservationClamp;
   return std::numeric_limits<double>::infinity();
 }
 
@@ -64,7 +78,7 @@ nlohmann::json describe_sport(const Sport& sport, const std::string& mode) {
   return {{"name", sport.name()},
           {"summary", sport.summary()},
           {"default_time_limit_s", sport.default_time_limit_s()},
-          {"control_hz", core::kControlHz},
+          {"control_hz", control_hz(sport, sport.modes().all().front().name)},
           {"settings", std::move(settings)},
           {"modes", std::move(modes)}};
 }

@@ -11,7 +11,9 @@
 namespace olympics::sports {
 
 // {"name", "summary", "default_time_limit_s", "control_hz", "settings": [...], "modes": [...]}
-// for one sport; `mode` "" = all its modes (an unknown one throws, naming the modes).
+// for one sport; `mode` "" = all its modes (an unknown one throws, naming the modes). The
+// control rates are those its matches run at (each mode's own, and its first mode's for the
+// sport), with the default settings.
 nlohmann::json describe_sport(const Sport& sport, const std::string& mode = "");
 // {"sports": [describe_sport(s) for every registered sport]}
 nlohmann::json sport_catalog();

@@ -6,7 +6,9 @@
 namespace olympics::sports {
 
 // The registry: one line per sport, naming the factory its folder defines
-// (std::unique_ptr<Sport> make_<name>() in namespace olympics::sports).
+// (std::unique_ptr<Sport> make_<name>() in namespace olympics::sports). Every line ends in a
+// backslash, so a new sport is one added line.
+// clang-format off
 #define OLYMPICS_SPORTS(X) \
   X(sandbox)               \
   X(tennis)                \
@@ -14,7 +16,9 @@ namespace olympics::sports {
   X(fencing)               \
   X(boxing)                \
   X(soccer)                \
-  X(basketball)
+  X(basketball)            \
+  /* the list's end */
+// clang-format on
 
 #define OLYMPICS_DECLARE_SPORT(name) std::unique_ptr<Sport> make_##name();
 OLYMPICS_SPORTS(OLYMPICS_DECLARE_SPORT)

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "core/self_observation_layout.h"
+
 namespace olympics::sports {
 
 void TickOutcome::end(const std::string& why, int winner) {
@@ -41,49 +43,59 @@ std::vector<std::string> ModeTable::names() const {
   return names;
 }
 
-LayoutBlock smpl_self_observation_block() {
-  return {"self", kSmplSelfObservation, "m, m/s, rad/s",
-          "root height; 23 body positions rel. root; 24 tan-norm rotations; 24 linear and 24 "
-          "angular velocities; heading frame, clamped to +-5"};
-}
-
-LayoutBlock smpl_action_block() {
-  return {"joint_targets", 69, "a (target = pi*a rad; knee flexion 5*a)",
-          "23 joints x (x, y, z) hinges in body order, L_Hip first"};
-}
-
 namespace {
 
-Layout humanoid_layout(LayoutBlock self, LayoutBlock action, const std::vector<LayoutBlock>& task,
+// Each humanoid's model, loaded once (it is read-only).
+const core::ModelSpec& loaded_model(core::HumanoidKind kind) {
+  if (kind == core::HumanoidKind::Smpl) {
+    static const core::ModelSpec smpl = core::load_humanoid(core::HumanoidKind::Smpl);
+    return smpl;
+  }
+  static const core::ModelSpec smplx = core::load_humanoid(core::HumanoidKind::SmplX);
+  return smplx;
+}
+
+}  // namespace
+
+LayoutBlock self_observation_block(core::HumanoidKind kind) {
+  const int bodies = static_cast<int>(loaded_model(kind).bodies.size());
+  const core::SelfObservationLayout at{bodies};
+  const std::string b = std::to_string(bodies);
+  LayoutBlock block{
+      kSelfBlock, at.size(), "m, m/s, rad/s",
+      "root height; " + std::to_string(bodies - 1) + " body positions rel. root; " + b +
+          " tan-norm rotations; " + b + " linear and " + b +
+          " angular velocities; heading frame, clamped to +-5" +
+          (kind == core::HumanoidKind::SmplX ? " (HUMANOID-SMPLX.md body order)" : "")};
+  for (const auto& f : at.fields()) block.fields.push_back({std::string(f.name), f.offset, f.size});
+  return block;
+}
+
+LayoutBlock joint_targets_block(core::HumanoidKind kind) {
+  const int hinges = loaded_model(kind).dof_count();
+  const std::string joints =
+      std::to_string(hinges / 3) + " joints x (x, y, z) hinges in body order, L_Hip first";
+  if (kind == core::HumanoidKind::Smpl)
+    return {"joint_targets", hinges, "a (target = pi*a rad; knee flexion 5*a)", joints};
+  return {"joint_targets", hinges,
+          "a (target = s*a rad, s = min(1.2 * the hinge's largest limit, pi); knee flexion 5*a)",
+          joints + ", each hand's fingers after its wrist"};
+}
+
+Layout humanoid_layout(core::HumanoidKind kind, const std::vector<LayoutBlock>& task,
                        std::vector<RewardTerm> rewards, std::vector<RefereeCall> calls) {
   Layout l;
-  l.observation = {std::move(self)};
+  l.observation = {self_observation_block(kind)};
   l.observation.insert(l.observation.end(), task.begin(), task.end());
-  l.action = {std::move(action)};
+  l.action = {joint_targets_block(kind)};
   l.rewards = std::move(rewards);
   l.calls = std::move(calls);
   return l;
 }
 
-}  // namespace
-
 Layout smpl_layout(const std::vector<LayoutBlock>& task, std::vector<RewardTerm> rewards,
                    std::vector<RefereeCall> calls) {
-  return humanoid_layout(smpl_self_observation_block(), smpl_action_block(), task,
-                         std::move(rewards), std::move(calls));
-}
-
-Layout smplx_layout(const std::vector<LayoutBlock>& task, std::vector<RewardTerm> rewards,
-                    std::vector<RefereeCall> calls) {
-  return humanoid_layout(
-      {"self", kSmplxSelfObservation, "m, m/s, rad/s",
-       "root height; 51 body positions rel. root; 52 tan-norm rotations; 52 linear and 52 "
-       "angular velocities; heading frame, clamped to +-5 (HUMANOID-SMPLX.md body order)"},
-      {"joint_targets", 153,
-       "a (target = s*a rad, s = min(1.2 * the hinge's largest limit, pi); knee flexion 5*a)",
-       "51 joints x (x, y, z) hinges in body order, L_Hip first, each hand's fingers after its "
-       "wrist"},
-      task, std::move(rewards), std::move(calls));
+  return humanoid_layout(core::HumanoidKind::Smpl, task, std::move(rewards), std::move(calls));
 }
 
 int Layout::observation_size() const {

@@ -7,6 +7,7 @@
 // the observation layout and the state hash).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -14,6 +15,8 @@
 #include <span>
 #include <string>
 #include <vector>
+
+#include "core/humanoid_assets.h"
 
 namespace olympics::sports {
 
@@ -70,13 +73,22 @@ class ModeTable {
   std::vector<ModeSpec> modes_;
 };
 
+// A named field inside a block: where it starts in the block and how many floats it holds.
+struct LayoutField {
+  std::string name;
+  int offset;
+  int size;
+};
+
 // One named block of an observation or action vector, for `describe` and for clients, which
-// find what they need by name (the protocol carries names and sizes).
+// find what they need by name (the protocol carries names and sizes). `fields`, where a block
+// declares them, name its parts (the self observation's: core/self_observation_layout.h).
 struct LayoutBlock {
   std::string name;
   int size;
   std::string units;
   std::string meaning;
+  std::vector<LayoutField> fields = {};
 };
 
 // A reward term: reported by name to the client beside the weighted total, so a trainer can
@@ -88,17 +100,23 @@ struct RewardTerm {
 };
 
 // A call the referee can make; every event in a tick's info["events"] names one
-// (framework/referee_events.h has the one shape every event takes).
+// (framework/referee_events.h has the one shape every event takes). `announced` calls are the
+// decisions people follow (a point, a goal, a knock-down: olympics-agent --calls prints them);
+// the rest come many a second (contacts, hits, punches) or are bookkeeping (falls).
 struct RefereeCall {
   std::string name;
   std::string meaning;
+  bool announced = false;
 };
+// For call lists: {"goal", "...", kAnnounced}.
+inline constexpr bool kAnnounced = true;
 
-// How every SMPL sport's observation starts (the self observation) and what its action is.
-inline constexpr int kSmplSelfObservation = 358;
-inline constexpr int kSmplxSelfObservation = 778;
-LayoutBlock smpl_self_observation_block();
-LayoutBlock smpl_action_block();
+// How every humanoid sport's observation starts (the self observation, block "self") and what
+// its action is (one target per hinge), for the humanoid `kind`: sizes and fields come from its
+// loaded model (SMPL: 24 bodies, 358 floats, 69 targets; SMPL-X: 52 bodies, 778, 153).
+inline constexpr const char* kSelfBlock = "self";
+LayoutBlock self_observation_block(core::HumanoidKind kind);
+LayoutBlock joint_targets_block(core::HumanoidKind kind);
 
 // Everything a mode of a sport declares about its vectors and calls; sizes derive from it.
 struct Layout {
@@ -111,13 +129,13 @@ struct Layout {
   std::vector<std::string> reward_names() const;
 };
 
-// The layout of an SMPL sport's mode: the self observation then `task` blocks, the 69 joint
+// The layout of a humanoid sport's mode: the self observation then `task` blocks, the joint
 // targets, its reward terms and its referee's calls.
+Layout humanoid_layout(core::HumanoidKind kind, const std::vector<LayoutBlock>& task,
+                       std::vector<RewardTerm> rewards, std::vector<RefereeCall> calls);
+// The same for the SMPL humanoid, which most sports play.
 Layout smpl_layout(const std::vector<LayoutBlock>& task, std::vector<RewardTerm> rewards,
                    std::vector<RefereeCall> calls);
-// The same for the SMPL-X humanoid with fingers: 778 self floats (52 bodies), 153 targets.
-Layout smplx_layout(const std::vector<LayoutBlock>& task, std::vector<RewardTerm> rewards,
-                    std::vector<RefereeCall> calls);
 
 // A sport's settings: each key with its default, what it means, and what values it takes, for
 // `describe` and for refusing what would break a match.
@@ -153,6 +171,9 @@ class SportMatch {
   // The mode's layout (the sizes above derive from it) and the time limit in force.
   virtual const Layout& layout() const = 0;
   virtual double time_limit_s() const = 0;
+  // Seconds of match time per tick: the control rate the server announces (1 / control_dt()).
+  virtual double control_dt() const = 0;
+  int control_hz() const { return static_cast<int>(std::lround(1.0 / control_dt())); }
 
   // Observation of tick `tick()` for one slot (self observation, then the task's).
   virtual void observe(int slot, std::span<float> out) const = 0;

@@ -10,47 +10,13 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <nlohmann/json.hpp>
-#include <set>
 
+#include "call_log.h"
 #include "match_client.h"
 #include "play_match.h"
 #include "policies.h"
 
 namespace {
-
-// With --calls: the referee's decisions and the score as they happen (from the observation's
-// info, so any agent of the match can follow it live). Ball contacts, hits and punches are left
-// out: they come many a second.
-void print_calls(const olympics::client::Observation& obs) try {
-  if (obs.info.empty()) return;
-  const auto info = nlohmann::json::parse(obs.info, nullptr, false);
-  if (!info.is_object() || !info.contains("events")) return;
-  static const std::set<std::string> decisions = {
-      "point",       "let",  "halt", "knockdown", "up",       "knockout",  "round_end",
-      "round_start", "goal", "out",  "restart",   "kick_off", "half_time", "encroachment"};
-  const std::string score = info.contains("score") ? info["score"].value("text", "") : "";
-  for (const auto& e : info["events"]) {
-    const std::string call = e.value("call", "");
-    if (!decisions.count(call)) continue;
-    std::string line = "tick " + std::to_string(obs.tick) + ": " + call;
-    if (e.contains("winner_team"))
-      line += " to team " + std::to_string(e["winner_team"].get<int>());
-    else if (e.contains("slot"))
-      line += " slot " + std::to_string(e["slot"].get<int>());
-    if (e.contains("round")) line += " round " + std::to_string(e["round"].get<int>());
-    if (e.contains("team") && !e.contains("slot"))
-      line += " team " + std::to_string(e["team"].get<int>());
-    for (const char* what : {"reason", "kind", "line"})
-      if (e.contains(what)) line += " (" + e[what].get<std::string>() + ")";
-    if (e.contains("card_0"))
-      line += " card " + std::to_string(e["card_0"].get<int>()) + "-" +
-              std::to_string(e["card_1"].get<int>());
-    std::printf("%s  %s\n", line.c_str(), score.c_str());
-  }
-  std::fflush(stdout);
-} catch (const nlohmann::json::exception&) {
-  // Info of another shape than the referee writes: nothing to print.
-}
 
 void play_one(olympics::client::MatchClient& client, const std::string& match_id,
               const std::vector<int>& slots, const std::string& policy_name,
@@ -65,7 +31,13 @@ void play_one(olympics::client::MatchClient& client, const std::string& match_id
   olympics::client::PlayOptions play;
   play.policy = policy_name, play.policy_seed = policy_seed, play.think_ms = think_ms;
   play.timeout_s = timeout_s;
-  if (calls) play.on_observation = print_calls;
+  if (calls)
+    play.on_observation = [announced = olympics::client::announced_calls(match.sport, match.mode)](
+                              const olympics::client::Observation& obs) {
+      for (const auto& line : olympics::client::call_lines(obs.tick, obs.info, announced))
+        std::printf("%s\n", line.c_str());
+      std::fflush(stdout);
+    };
   const auto& r = olympics::client::play_joined_match(client, play);
   if (json) {
     nlohmann::json out = {

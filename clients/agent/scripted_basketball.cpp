@@ -148,4 +148,8 @@ void ScriptedBasketballPolicy::act(std::span<const float> o, std::span<float> a)
   clock_s_ += control_dt_;
 }
 
+std::unique_ptr<Policy> make_scripted_basketball() {
+  return std::make_unique<ScriptedBasketballPolicy>();
+}
+
 }  // namespace olympics::client

@@ -90,4 +90,6 @@ void ScriptedBoxingPolicy::act(std::span<const float> o, std::span<float> a) {
   punch(o, a, arm, target);
 }
 
+std::unique_ptr<Policy> make_scripted_boxing() { return std::make_unique<ScriptedBoxingPolicy>(); }
+
 }  // namespace olympics::client

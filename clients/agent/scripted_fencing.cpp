@@ -75,4 +75,8 @@ void ScriptedFencingPolicy::act(std::span<const float> o, std::span<float> a) {
   bend_elbow(a, Arm::Right, 0);
 }
 
+std::unique_ptr<Policy> make_scripted_fencing() {
+  return std::make_unique<ScriptedFencingPolicy>();
+}
+
 }  // namespace olympics::client

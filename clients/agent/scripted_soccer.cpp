@@ -86,4 +86,6 @@ void ScriptedSoccerPolicy::act(std::span<const float> o, std::span<float> a) {
   legs_->act(o, target, bearing(target.norm() > 1.0 ? target : dir), a);
 }
 
+std::unique_ptr<Policy> make_scripted_soccer() { return std::make_unique<ScriptedSoccerPolicy>(); }
+
 }  // namespace olympics::client

@@ -1,17 +1,23 @@
-// Reading the SMPL self observation (358 floats, sports/core/self_observation.h) and writing SMPL
-// actions (69 PD targets): offsets and small helpers shared by the scripted controllers.
+// Reading the SMPL self observation (358 floats) and writing SMPL actions (69 PD targets):
+// offsets and small helpers shared by the scripted controllers. The offsets come from the one
+// description of the self observation's fields that the server writes it by
+// (sports/core/self_observation_layout.h), for the SMPL humanoid's 24 bodies.
 #pragma once
 
 #include <Eigen/Core>
 #include <span>
 
+#include "self_observation_layout.h"
+
 namespace olympics::client::smpl {
 
-constexpr int kSelfObservation = 358;
-constexpr int kActions = 69;
-constexpr int kBodyPos = 1;     // bodies 1..23 relative to the root, 3 each
-constexpr int kRotations = 70;  // 24 bodies x (x axis, z axis), 6 each
-constexpr int kLinVel = 214;    // 24 x 3; the root first
+constexpr int kBodies = 24;
+constexpr core::SelfObservationLayout kSelf{kBodies};
+constexpr int kSelfObservation = kSelf.size();      // 358
+constexpr int kActions = 3 * (kBodies - 1);         // 69: x, y, z hinges per joint
+constexpr int kBodyPos = kSelf.body_positions();    // bodies 1..23 relative to the root
+constexpr int kRotations = kSelf.body_rotations();  // (x axis, z axis) per body
+constexpr int kLinVel = kSelf.linear_velocities();  // per body, the root first
 
 // Body indices (HUMANOID.md section 1.1). Joint j moves body j (j >= 1).
 enum Body {
@@ -41,9 +47,11 @@ inline Eigen::Vector3d vec3(std::span<const float> o, int at) {
   return {o[at], o[at + 1], o[at + 2]};
 }
 inline Eigen::Vector3d body_position(std::span<const float> o, int body) {
-  return body == kPelvis ? Eigen::Vector3d::Zero() : vec3(o, kBodyPos + 3 * (body - 1));
+  return body == kPelvis ? Eigen::Vector3d::Zero() : vec3(o, kSelf.body_position(body));
 }
-inline Eigen::Vector3d root_velocity(std::span<const float> o) { return vec3(o, kLinVel); }
+inline Eigen::Vector3d root_velocity(std::span<const float> o) {
+  return vec3(o, kSelf.linear_velocity(kPelvis));
+}
 
 // The body's rotation in the heading frame, rebuilt from its x and z axes.
 Eigen::Matrix3d body_rotation(std::span<const float> o, int body);

@@ -1,18 +1,23 @@
-// Reading the SMPL-X self observation (778 floats, 52 bodies, sports/core/self_observation.h)
-// and writing SMPL-X actions (153 PD targets): offsets, body indices and the action scales.
+// Reading the SMPL-X self observation (778 floats, 52 bodies) and writing SMPL-X actions (153 PD
+// targets): offsets, body indices and the action scales. The offsets come from the one
+// description of the self observation's fields that the server writes it by
+// (sports/core/self_observation_layout.h).
 #pragma once
 
 #include <Eigen/Core>
 #include <span>
 
+#include "self_observation_layout.h"
+
 namespace olympics::client::smplx {
 
 constexpr int kBodies = 52;
-constexpr int kSelfObservation = 1 + 3 * (kBodies - 1) + 12 * kBodies;  // 778
-constexpr int kActions = 3 * (kBodies - 1);                             // 153
-constexpr int kBodyPos = 1;
-constexpr int kRotations = kBodyPos + 3 * (kBodies - 1);
-constexpr int kLinVel = kRotations + 6 * kBodies;
+constexpr core::SelfObservationLayout kSelf{kBodies};
+constexpr int kSelfObservation = kSelf.size();      // 778
+constexpr int kActions = 3 * (kBodies - 1);         // 153: x, y, z hinges per joint
+constexpr int kBodyPos = kSelf.body_positions();    // bodies 1..51 relative to the root
+constexpr int kRotations = kSelf.body_rotations();  // (x axis, z axis) per body
+constexpr int kLinVel = kSelf.linear_velocities();  // per body, the root first
 
 // Body indices (HUMANOID-SMPLX.md section 1): the SMPL body's first 14, then each arm's thorax,
 // shoulder, elbow and wrist (the palm) and its 15 finger links (index, middle, pinky, ring, thumb;
@@ -43,7 +48,7 @@ inline Eigen::Vector3d vec3(std::span<const float> o, int at) {
 }
 // Relative to the root, heading frame.
 inline Eigen::Vector3d body_position(std::span<const float> o, int body) {
-  return body == 0 ? Eigen::Vector3d::Zero() : vec3(o, kBodyPos + 3 * (body - 1));
+  return body == 0 ? Eigen::Vector3d::Zero() : vec3(o, kSelf.body_position(body));
 }
 
 // Sets joint `body`'s hinge `axis` (0 x, 1 y, 2 z) to `radians`, through the action scale the

@@ -81,16 +81,19 @@ libs = pkg_config("--libs")
 sources = ([os.path.join(HERE, f) for f in ("bindings.cpp", "vector_bindings.cpp",
                                            "policy_bindings.cpp")] +
            sorted(glob.glob(os.path.join(ROOT, "clients", "cpp", "*.cpp"))) +
-           # the policies olympics-agent plays (NativePolicy), without its programs' mains
+           # the policies olympics-agent plays (NativePolicy), without its programs' mains and
+           # the agent's --calls log (which reads the sports registry)
            sorted(f for f in glob.glob(os.path.join(ROOT, "clients", "agent", "*.cpp"))
                   if os.path.basename(f) not in ("main.cpp", "snapshot_tool.cpp",
-                                                 "play_match.cpp")) +
+                                                 "play_match.cpp", "call_log.cpp")) +
            sorted(glob.glob(os.path.join(ROOT, "protocol", "*.cpp"))))
 extension = Extension(
     "smpl_olympics._client",
     sources=sources,  # absolute: objects then stay under build/
+    # sports/core: self_observation_layout.h alone (header-only), which the policies read by
     include_dirs=[os.path.join(ROOT, d) for d in ("lcmtypes", "protocol", "clients/cpp",
-                                                  "clients/agent", "clients/python")] +
+                                                  "clients/agent", "clients/python",
+                                                  "sports/core")] +
                  [pybind11_include(), "/usr/include/eigen3"],
     extra_compile_args=["-std=c++20", "-O2", "-fvisibility=hidden",
                         *[f for f in cflags if not f.startswith("-I")]],

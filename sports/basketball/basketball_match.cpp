@@ -12,7 +12,7 @@ namespace olympics::sports::basketball {
 namespace {
 
 const core::ModelSpec& player_model() {
-  static const core::ModelSpec spec = core::load_humanoid(core::HumanoidKind::SmplX);
+  static const core::ModelSpec spec = core::load_humanoid(kHumanoid);
   return spec;
 }
 
@@ -52,14 +52,18 @@ std::vector<RefereeCall> basketball_calls() {
   return {
       {"basket",
        "the ball went down through the rim (slot: the shooter; points, team, counted, x and y "
-       "of the release)"},
+       "of the release)",
+       kAnnounced},
       {"not_cleared",
        "a basket by a side that had not cleared the ball behind the arc: no points "
-       "(slot: the shooter)"},
-      {"out", "the ball touched the floor outside the lines (last_touch_slot)"},
-      {"shot_clock", "the side with the ball did not get a shot to the basket in time (team)"},
-      {"restart", "play restarts (kind: check_ball or after_basket; team, x, y)"},
-      {"miss", "free throw: the ball came down on the floor or left the court without a basket"},
+       "(slot: the shooter)",
+       kAnnounced},
+      {"out", "the ball touched the floor outside the lines (last_touch_slot)", kAnnounced},
+      {"shot_clock", "the side with the ball did not get a shot to the basket in time (team)",
+       kAnnounced},
+      {"restart", "play restarts (kind: check_ball or after_basket; team, x, y)", kAnnounced},
+      {"miss", "free throw: the ball came down on the floor or left the court without a basket",
+       kAnnounced},
       {"fall", "a player fell (body)"},
       {"stood_up", "team play with falls: stand_up: a player down 2 s was stood up where it lay"}};
 }
@@ -69,7 +73,6 @@ BasketballMatch::BasketballMatch(const BasketballConfig& config, const ModeSpec&
     : SmplMatch(mode, std::move(layout), settings),
       config_(config),
       team_play_(is_team_play(mode.name)),
-      rng_(settings.seed),
       referee_(config.court, config.rules, mode.slot_teams) {
   config_.court.build(scene().world());
   for (int s = 0; s < slot_count(); ++s) add_player(player_model(), {});
@@ -78,13 +81,13 @@ BasketballMatch::BasketballMatch(const BasketballConfig& config, const ModeSpec&
   root_before_.resize(slot_count());
   ball_->sense_contacts();
   if (team_play_) {
-    const int first = std::uniform_int_distribution<int>(0, 1)(rng_);
+    const int first = std::uniform_int_distribution<int>(0, 1)(rng());
     const Restart r = referee_.start(first, 0.0);
     log_stoppage({"start", std::nullopt, -1, r});
     carry_out(r);
   } else {
     const Eigen::Vector2d spot(config_.court.free_throw_line_x() - kBehindLine, 0);
-    const core::RootPlacement start = jittered_start(spot, 0.0, rng_);
+    const core::RootPlacement start = jittered_start(spot, 0.0, rng());
     reset_player(0, start);
     present_to(0, start);
   }
@@ -98,7 +101,7 @@ Eigen::Vector3d BasketballMatch::target(int basket) const {
 
 core::RootPlacement BasketballMatch::placement(const Eigen::Vector2d& at,
                                                const Eigen::Vector2d& facing) {
-  return jittered_start(at, std::atan2(facing.y(), facing.x()), rng_);
+  return jittered_start(at, std::atan2(facing.y(), facing.x()), rng());
 }
 
 void BasketballMatch::present_to(int slot, const core::RootPlacement& at) {

@@ -35,6 +35,9 @@ struct BasketballConfig {
   bool stand_up = true;           // team play: a player down 2 s is stood up where it lies
 };
 
+// The humanoid basketball plays, chosen here once: the SMPL-X with fingers, which hold the ball.
+inline constexpr core::HumanoidKind kHumanoid = core::HumanoidKind::SmplX;
+
 bool is_team_play(const std::string& mode);
 std::vector<LayoutBlock> basketball_task_layout(const ModeSpec& mode);
 std::vector<RefereeCall> basketball_calls();
@@ -87,7 +90,6 @@ class BasketballMatch : public SmplMatch {
 
   BasketballConfig config_;
   bool team_play_;
-  std::mt19937_64 rng_;
   std::unique_ptr<equipment::Ball> ball_;
   BasketballReferee referee_;
   Eigen::Vector3d present_ = Eigen::Vector3d::Zero();

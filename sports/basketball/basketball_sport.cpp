@@ -66,9 +66,9 @@ std::unique_ptr<SportMatch> BasketballSport::create(const MatchSettings& setting
 
 Layout BasketballSport::layout(const std::string& mode) const {
   const ModeSpec& m = modes_.at(mode);
-  return smplx_layout(basketball_task_layout(m),
-                      is_team_play(m.name) ? team_play_rewards() : free_throw_rewards(),
-                      basketball_calls());
+  return humanoid_layout(kHumanoid, basketball_task_layout(m),
+                         is_team_play(m.name) ? team_play_rewards() : free_throw_rewards(),
+                         basketball_calls());
 }
 
 }  // namespace olympics::sports::basketball

@@ -53,20 +53,17 @@ std::vector<LayoutBlock> boxing_task_layout() {
 
 std::vector<RefereeCall> boxing_calls() {
   return {{"punch", "a scoring punch (slot, target_slot, body, glove, force_n)"},
-          {"knockdown", "a boxer is down during a round: the count starts (slot)"},
-          {"up", "the boxer beat the count (slot)"},
-          {"knockout", "not up before the count's end: the bout is over (slot)"},
-          {"round_end", "the bell: the round's card (round, card_0, card_1)"},
-          {"round_start", "the bell after the rest (round)"},
+          {"knockdown", "a boxer is down during a round: the count starts (slot)", kAnnounced},
+          {"up", "the boxer beat the count (slot)", kAnnounced},
+          {"knockout", "not up before the count's end: the bout is over (slot)", kAnnounced},
+          {"round_end", "the bell: the round's card (round, card_0, card_1)", kAnnounced},
+          {"round_start", "the bell after the rest (round)", kAnnounced},
           {"fall", "a boxer fell (body)"}};
 }
 
 BoxingMatch::BoxingMatch(const BoxingConfig& config, const ModeSpec& mode, Layout layout,
                          const MatchSettings& settings)
-    : SmplMatch(mode, std::move(layout), settings),
-      config_(config),
-      rng_(settings.seed),
-      referee_(config.rules) {
+    : SmplMatch(mode, std::move(layout), settings), config_(config), referee_(config.rules) {
   const core::ModelSpec& spec = boxer_model(config_.both_gloves);
   hands_ = {spec.body_index("L_Hand"), spec.body_index("R_Hand")};
   for (int h = 0; h < 2; ++h) glove_centre_[h] = glove_centre(spec, hands_[h]);
@@ -82,7 +79,7 @@ BoxingMatch::BoxingMatch(const BoxingConfig& config, const ModeSpec& mode, Layou
 }
 
 core::RootPlacement BoxingMatch::corner(int b) {
-  return combat::jittered_start(b, config_.ring.start, rng_);
+  return combat::jittered_start(b, config_.ring.start, rng());
 }
 
 Eigen::Vector3d BoxingMatch::glove_position(int slot, int hand) const {

@@ -59,7 +59,6 @@ class BoxingMatch : public SmplMatch {
   nlohmann::json score_json() const;
 
   BoxingConfig config_;
-  std::mt19937_64 rng_;
   std::array<int, 2> hands_{};                   // L_Hand, R_Hand
   std::array<Eigen::Vector3d, 2> glove_centre_;  // in each hand's frame
   std::vector<int> targets_;

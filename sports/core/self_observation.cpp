@@ -4,31 +4,36 @@
 #include <stdexcept>
 
 #include "core/rotation.h"
+#include "core/self_observation_layout.h"
 
 namespace olympics::core {
 
-int self_observation_size(int body_count) { return 1 + 3 * (body_count - 1) + 12 * body_count; }
+int self_observation_size(int body_count) { return SelfObservationLayout{body_count}.size(); }
 
 void write_self_observation(const std::vector<BodyState>& bodies, std::span<float> out) {
   const int n = static_cast<int>(bodies.size());
-  if (static_cast<int>(out.size()) != self_observation_size(n))
+  const SelfObservationLayout at{n};
+  if (static_cast<int>(out.size()) != at.size())
     throw std::invalid_argument("self observation buffer has the wrong size");
   const BodyState& root = bodies[0];
   const Eigen::Quaterniond heading_inv = inverse_heading(root.orientation);
-  size_t k = 0;
-  auto put = [&](double v) {
-    out[k++] = std::clamp(static_cast<float>(v), -kObservationClamp, kObservationClamp);
+  auto put = [&](int k, double v) {
+    out[k] = std::clamp(static_cast<float>(v), -kObservationClamp, kObservationClamp);
   };
-  auto put3 = [&](const Eigen::Vector3d& v) { put(v.x()), put(v.y()), put(v.z()); };
-  put(root.position.z());
-  for (int i = 1; i < n; ++i) put3(heading_inv * (bodies[i].position - root.position));
+  auto put3 = [&](int k, const Eigen::Vector3d& v) {
+    put(k, v.x()), put(k + 1, v.y()), put(k + 2, v.z());
+  };
+  put(at.root_height(), root.position.z());
+  for (int i = 1; i < n; ++i)
+    put3(at.body_position(i), heading_inv * (bodies[i].position - root.position));
   for (int i = 0; i < n; ++i) {
     Eigen::Quaterniond local = heading_inv * bodies[i].orientation;
-    put3(local * Eigen::Vector3d::UnitX());
-    put3(local * Eigen::Vector3d::UnitZ());
+    put3(at.body_rotation(i), local * Eigen::Vector3d::UnitX());
+    put3(at.body_rotation(i) + 3, local * Eigen::Vector3d::UnitZ());
   }
-  for (int i = 0; i < n; ++i) put3(heading_inv * bodies[i].linear_velocity);
-  for (int i = 0; i < n; ++i) put3(heading_inv * bodies[i].angular_velocity);
+  for (int i = 0; i < n; ++i) put3(at.linear_velocity(i), heading_inv * bodies[i].linear_velocity);
+  for (int i = 0; i < n; ++i)
+    put3(at.angular_velocity(i), heading_inv * bodies[i].angular_velocity);
 }
 
 std::vector<std::string> self_observation_names(const ModelSpec& spec) {

@@ -1,12 +1,8 @@
 // The humanoid's self observation (HUMANOID.md section 2), in the root's heading frame.
 //
-// Layout for B bodies (SMPL B = 24 -> 358 floats; SMPL-X B = 52 -> 778):
-//   [0]                     root height
-//   [1, 1+3(B-1))           positions of bodies 1..B-1 minus the root position
-//   next 6B                 body rotations as tan-norm 6D (rotated x axis, then rotated z axis)
-//   next 3B                 body linear velocities
-//   next 3B                 body angular velocities
-// Every vector is rotated by the inverse root heading (yaw only); every entry is clamped to +-5.
+// Its fields for B bodies (SMPL B = 24 -> 358 floats; SMPL-X B = 52 -> 778) are described once,
+// for the server and the clients alike, in core/self_observation_layout.h. Every vector is
+// rotated by the inverse root heading (yaw only); every entry is clamped to +-5.
 #pragma once
 
 #include <span>

@@ -41,19 +41,17 @@ std::vector<LayoutBlock> fencing_task_layout() {
 
 std::vector<RefereeCall> fencing_calls() {
   return {{"hit", "a tip met a valid target with enough force (slot, target_slot, body, force_n)"},
-          {"point", "a touch scores for slot (reason: touch, double, fall)"},
+          {"point", "a touch scores for slot (reason: touch, double, fall)", kAnnounced},
           {"halt",
            "play stopped without a score (reason: off_piste, fall, idle, double_annulled; "
-           "culprit_slot)"},
+           "culprit_slot)",
+           kAnnounced},
           {"fall", "a fencer fell (body)"}};
 }
 
 FencingMatch::FencingMatch(const FencingConfig& config, const ModeSpec& mode, Layout layout,
                            const MatchSettings& settings)
-    : SmplMatch(mode, std::move(layout), settings),
-      config_(config),
-      rng_(settings.seed),
-      referee_(config.rules) {
+    : SmplMatch(mode, std::move(layout), settings), config_(config), referee_(config.rules) {
   const core::ModelSpec& spec = fencer_model();
   hand_body_ = spec.body_index("R_Hand");
   hand_own_geoms_ = static_cast<int>(spec.bodies[hand_body_].geoms.size()) - epee_geom_count();
@@ -147,7 +145,7 @@ void FencingMatch::record_halt(const Halt& halt) {
 }
 
 core::RootPlacement FencingMatch::on_guard(int fencer) {
-  return combat::jittered_start(fencer, config_.piste.on_guard, rng_);
+  return combat::jittered_start(fencer, config_.piste.on_guard, rng());
 }
 
 void FencingMatch::back_on_guard() {

@@ -50,7 +50,6 @@ class FencingMatch : public SmplMatch {
   nlohmann::json score_json() const;
 
   FencingConfig config_;
-  std::mt19937_64 rng_;
   int hand_body_ = -1;
   int hand_own_geoms_ = 0;  // the hand's geoms before the épée's
   std::vector<int> targets_;

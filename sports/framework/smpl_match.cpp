@@ -15,8 +15,9 @@ SmplMatch::SmplMatch(const ModeSpec& mode, Layout layout, const MatchSettings& s
       layout_(std::move(layout)),
       reward_names_(layout_.reward_names()),
       scene_(scene),
+      rng_(settings.seed),
       time_limit_ticks_(static_cast<int>(std::lround(settings.time_limit_s / scene.control_dt))) {
-  if (layout_.observation.empty() || layout_.observation.front().name != "self")
+  if (layout_.observation.empty() || layout_.observation.front().name != kSelfBlock)
     throw std::logic_error("an SMPL match's observation begins with the self block");
   for (const auto& r : layout_.rewards) reward_weights_.push_back(static_cast<float>(r.weight));
   const int n = mode_.slot_count();
@@ -71,7 +72,7 @@ void SmplMatch::stand_up_fallen(const std::function<double(int)>& yaw) {
 void SmplMatch::observe(int slot, std::span<float> out) const {
   ObservationWriter writer(layout_.observation, out);
   const auto bodies = scene_.humanoid(slot).body_states();
-  core::write_self_observation(bodies, writer.begin("self").whole_block());
+  core::write_self_observation(bodies, writer.begin(kSelfBlock).whole_block());
   write_task_observation(slot, HeadingFrame(bodies[0]), writer);
   writer.finish();
 }

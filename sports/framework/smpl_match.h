@@ -3,6 +3,7 @@
 // - slots and teams, from the sport's mode table;
 // - the scene (one humanoid per slot), stepped at the control rate with the scene's substeps;
 // - ticks and the time limit (from the scene's control step), truncation at the limit;
+// - the random generator, seeded from the match seed;
 // - falls: every player's FallDetector is read once per tick; going down logs a "fall" event;
 // - the outcome's sizes, rewards as the weighted sum of the layout's terms, forfeits;
 // - the observation: the self observation, then the sport's blocks through an
@@ -15,6 +16,7 @@
 #pragma once
 
 #include <functional>
+#include <random>
 #include <span>
 #include <string>
 #include <vector>
@@ -40,7 +42,8 @@ class SmplMatch : public SportMatch {
   int action_size() const final { return layout_.action_size(); }
   const std::vector<std::string>& reward_terms() const final { return reward_names_; }
   const Layout& layout() const final { return layout_; }
-  double time_limit_s() const final { return time_limit_ticks_ * scene_.settings().control_dt; }
+  double time_limit_s() const final { return time_limit_ticks_ * control_dt(); }
+  double control_dt() const final { return scene_.settings().control_dt; }
   void observe(int slot, std::span<float> out) const final;
   void step(const std::vector<std::span<const float>>& actions) final;
   const TickOutcome& outcome() const final { return outcome_; }
@@ -86,6 +89,10 @@ class SmplMatch : public SportMatch {
   // Back to the rest pose at `placement`, fall detection restarted.
   void reset_player(int slot, const core::RootPlacement& placement);
   core::HumanoidScene& scene() { return scene_; }
+  // The match's one random generator, seeded from the match seed: every draw a sport makes
+  // (who serves first, jittered start marks, ball launches) comes from it, in the order the
+  // sport makes them, so the same seed plays the same match.
+  std::mt19937_64& rng() { return rng_; }
   // The slot whose humanoid is the physics entity `entity` (a GeomTag's), or -1: the arena,
   // equipment.
   int slot_of_entity(int entity) const;
@@ -124,6 +131,7 @@ class SmplMatch : public SportMatch {
   std::vector<std::string> reward_names_;
   std::vector<float> reward_weights_;
   core::HumanoidScene scene_;
+  std::mt19937_64 rng_;
   std::vector<core::FallDetector> falls_;
   std::vector<std::uint8_t> down_;
   std::vector<int> clear_ticks_;    // per slot, while down: ticks in a row the detector was clear

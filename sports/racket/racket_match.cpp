@@ -76,9 +76,9 @@ std::vector<RefereeCall> racket_calls() {
           {"net", "the ball touched the net"},
           {"dead_ball", "the ball stopped: it counts as bouncing again where it lies"},
           {"body_touch", "the ball touched a player's body"},
-          {"point", "a point is decided: winner_team, reason, culprit_slot"},
+          {"point", "a point is decided: winner_team, reason, culprit_slot", kAnnounced},
           {"fall", "a player fell (body): that side loses the point"},
-          {"let", "both sides fell at once: the point is played again"},
+          {"let", "both sides fell at once: the point is played again", kAnnounced},
           {"return_in", "ball return: the return landed in; the next ball comes"}};
 }
 
@@ -86,7 +86,6 @@ RacketMatch::RacketMatch(const RacketMatchConfig& config, const ModeSpec& mode, 
                          const MatchSettings& settings)
     : SmplMatch(mode, std::move(layout), settings),
       config_(config),
-      rng_(settings.seed),
       flight_(config.game.ball, config.game.ball.restitution, config.game.ball.friction),
       probe_(config.game.ball.radius),
       arena_(config.game.arena()),
@@ -100,7 +99,7 @@ RacketMatch::RacketMatch(const RacketMatchConfig& config, const ModeSpec& mode, 
     const equipment::EquipmentSpec& e = config_.game.equipment;
     discs_.push_back({i, e.face, {}, {}, e.restitution, e.friction});
   }
-  const int first_server = std::uniform_int_distribution<int>(0, 1)(rng_);
+  const int first_server = std::uniform_int_distribution<int>(0, 1)(rng());
   if (config_.mode != RacketMode::BallReturn) {
     if (config_.game.on_table)
       scoreboard_ = std::make_unique<TableTennisScore>(config_.table_tennis, first_server);
@@ -131,8 +130,8 @@ equipment::Pose RacketMatch::racket_pose(int slot) const {
 Eigen::Vector2d RacketMatch::draw_target(int slot) {
   const RacketGame& g = config_.game;
   const int opponent_side = -RacketGame::side_sign(teams()[slot]);
-  const double x = std::uniform_real_distribution<double>(g.target_x_lo, g.target_x_hi)(rng_);
-  const double y = std::uniform_real_distribution<double>(-g.target_y, g.target_y)(rng_);
+  const double x = std::uniform_real_distribution<double>(g.target_x_lo, g.target_x_hi)(rng());
+  const double y = std::uniform_real_distribution<double>(-g.target_y, g.target_y)(rng());
   return {opponent_side * x, y};
 }
 
@@ -157,13 +156,13 @@ void RacketMatch::start_point() {
   }
   Launch launch;
   if (config_.mode == RacketMode::BallReturn) {
-    launch = ball_return_launch(config_.game, 0, rng_);
+    launch = ball_return_launch(config_.game, 0, rng());
   } else {
     const double receiver_y = start_placement(fed_slot).position.y();
     launch =
         config_.feed_to_player
-            ? feed_to_player_launch(config_.game, receiving_team, receiver_y, rng_)
-            : feed_launch(config_.game, receiving_team, receiver_y >= 0 ? 1 : -1, doubles, rng_);
+            ? feed_to_player_launch(config_.game, receiving_team, receiver_y, rng())
+            : feed_launch(config_.game, receiving_team, receiver_y >= 0 ? 1 : -1, doubles, rng());
   }
   flight_.set_state(launch.position, launch.velocity);
 }

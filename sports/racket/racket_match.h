@@ -67,7 +67,6 @@ class RacketMatch : public SmplMatch {
   Eigen::Vector2d draw_target(int slot);
 
   RacketMatchConfig config_;
-  std::mt19937_64 rng_;
   int hand_body_ = -1;
   equipment::BallFlight flight_;
   equipment::BodyProbe probe_;

@@ -51,8 +51,7 @@ Layout SandboxSport::layout(const std::string& mode) const {
 SandboxMatch::SandboxMatch(const ModeSpec& mode, Layout layout, const MatchSettings& settings)
     : SmplMatch(mode, std::move(layout), settings) {
   // Humanoids on a circle of 1 m, facing its centre; the seed turns the circle.
-  std::mt19937_64 rng(settings.seed);
-  const double phase = std::uniform_real_distribution<double>(0, 2 * M_PI)(rng);
+  const double phase = std::uniform_real_distribution<double>(0, 2 * M_PI)(rng());
   const int n = slot_count();
   for (int i = 0; i < n; ++i) {
     const double angle = phase + 2 * M_PI * i / n;

@@ -46,18 +46,22 @@ std::vector<LayoutBlock> soccer_task_layout(const ModeSpec& mode) {
 }
 
 std::vector<RefereeCall> soccer_calls() {
-  return {{"goal",
-           "the whole ball crossed the goal line in the goal (slot: scorer, team, "
-           "assist_slot, own_goal)"},
-          {"out", "the whole ball left the field (line: touch or goal; last_touch_slot)"},
-          {"restart", "play restarts (kind: throw_in, free_kick, goal_kick, corner; team, x, y)"},
-          {"kick_off", "play (re)starts from the centre (team: the side that kicks off)"},
-          {"half_time", "the teams change ends (half)"},
-          {"encroachment",
-           "an opponent played a restart before the taking side: taken again "
-           "(culprit_slot)"},
-          {"stood_up", "a player down for the set time was stood up where it lay"},
-          {"fall", "a player fell (body)"}};
+  return {
+      {"goal",
+       "the whole ball crossed the goal line in the goal (slot: scorer, team, "
+       "assist_slot, own_goal)",
+       kAnnounced},
+      {"out", "the whole ball left the field (line: touch or goal; last_touch_slot)", kAnnounced},
+      {"restart", "play restarts (kind: throw_in, free_kick, goal_kick, corner; team, x, y)",
+       kAnnounced},
+      {"kick_off", "play (re)starts from the centre (team: the side that kicks off)", kAnnounced},
+      {"half_time", "the teams change ends (half)", kAnnounced},
+      {"encroachment",
+       "an opponent played a restart before the taking side: taken again "
+       "(culprit_slot)",
+       kAnnounced},
+      {"stood_up", "a player down for the set time was stood up where it lay"},
+      {"fall", "a player fell (body)"}};
 }
 
 SoccerMatch::SoccerMatch(const SoccerConfig& config, const ModeSpec& mode, Layout layout,
@@ -65,7 +69,6 @@ SoccerMatch::SoccerMatch(const SoccerConfig& config, const ModeSpec& mode, Layou
     : SmplMatch(mode, std::move(layout), settings),
       config_(config),
       kind_(soccer_mode(mode.name)),
-      rng_(settings.seed),
       guard_(equipment::soccer_ball().radius),
       referee_(config.field, config.rules, mode.slot_teams, equipment::soccer_ball().radius) {
   config_.field.build(scene().world());
@@ -81,7 +84,7 @@ SoccerMatch::SoccerMatch(const SoccerConfig& config, const ModeSpec& mode, Layou
   root_before_.resize(slot_count());
   for (int s = 0; s < slot_count(); ++s) add_player(player_model(), {});
   if (kind_ == SoccerMode::TeamPlay) {
-    const int first = std::uniform_int_distribution<int>(0, 1)(rng_);
+    const int first = std::uniform_int_distribution<int>(0, 1)(rng());
     referee_.start(first, 0.0);
     kick_off_positions(first);
     nlohmann::json e = referee_event("kick_off", 0.0);
@@ -96,7 +99,7 @@ SoccerMatch::SoccerMatch(const SoccerConfig& config, const ModeSpec& mode, Layou
 }
 
 core::RootPlacement SoccerMatch::placement(const Eigen::Vector2d& at, int facing) {
-  return jittered_start(at, facing > 0 ? 0.0 : M_PI, rng_);
+  return jittered_start(at, facing > 0 ? 0.0 : M_PI, rng());
 }
 
 int SoccerMatch::attack(int slot) const {

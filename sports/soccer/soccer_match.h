@@ -81,7 +81,6 @@ class SoccerMatch : public SmplMatch {
 
   SoccerConfig config_;
   SoccerMode kind_;
-  std::mt19937_64 rng_;
   std::unique_ptr<equipment::Ball> ball_;
   equipment::FastBallGuard guard_;
   SoccerReferee referee_;

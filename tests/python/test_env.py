@@ -42,6 +42,13 @@ class EnvAgainstRealServer(unittest.TestCase):
         self.assertEqual(env.block(observations["slot_0"], "time_remaining").shape, (1,))
         with self.assertRaises(KeyError):
             env.block(observations["slot_0"], "ball_position")
+        # Fields inside the self block, by name: the root's height first, the rotations at 70.
+        obs0 = observations["slot_0"]
+        self.assertEqual(env.field(obs0, "self", "root_height")[0], obs0[0])
+        self.assertEqual(env.obs_fields[("self", "body_rotations")], slice(70, 214))
+        self.assertEqual(env.field(obs0, "self", "angular_velocities").shape, (72,))
+        with self.assertRaises(KeyError):
+            env.field(obs0, "self", "joint_angles")
         rng = np.random.default_rng(0)
         steps, returns = 0, 0.0
         while env.agents:

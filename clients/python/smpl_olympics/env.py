@@ -58,8 +58,12 @@ class OlympicsParallelEnv:
         self.state_space = box(np.tile(obs_space.low, len(self.possible_agents)),
                                np.tile(obs_space.high, len(self.possible_agents)))
         self.obs_blocks, at = {}, 0  # block name -> slice of an observation
+        self.obs_fields = {}  # (block, field) -> slice, for the blocks the catalog gives fields
         for b in spec["observation"]:
             self.obs_blocks[b["name"]] = slice(at, at + b["size"])
+            for f in b.get("fields", []):
+                self.obs_fields[(b["name"], f["name"])] = slice(at + f["offset"],
+                                                                at + f["offset"] + f["size"])
             at += b["size"]
 
     @property
@@ -165,6 +169,14 @@ class OlympicsParallelEnv:
         if name not in self.obs_blocks:
             raise KeyError(f"no observation block {name!r}; blocks: {', '.join(self.obs_blocks)}")
         return observation[self.obs_blocks[name]]
+
+    def field(self, observation, block, name):
+        """A named field inside a block ("self", "root_height"): the catalog lists the self block's
+        fields, as the server writes them (sports/core/self_observation_layout.h)."""
+        if (block, name) not in self.obs_fields:
+            known = ", ".join(f"{b}.{f}" for b, f in self.obs_fields)
+            raise KeyError(f"no observation field {block}.{name}; fields: {known or 'none'}")
+        return observation[self.obs_fields[(block, name)]]
 
     def _unpack(self, batch, live):
         """The batch's entries for the agents in `live` (those that finished earlier drop out)."""

@@ -223,7 +223,8 @@ class Trainer:
     def native(self, name, seed):
         blocks = self.spec["observation"]
         return NativePolicy(name, self.args.sport, self.args.mode, [b["name"] for b in blocks],
-                            [b["size"] for b in blocks], self.action_size, 30.0, seed)
+                            [b["size"] for b in blocks], self.action_size,
+                            float(self.spec["control_hz"]), seed)
 
     def make_helpers(self, num_envs):
         base = (lambda e, s: self.native("scripted", e * 100 + s)) if self.args.residual != "none" \

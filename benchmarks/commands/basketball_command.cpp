@@ -1,0 +1,30 @@
+// olympics-bench basketball [--json] [--throws N] [--policies P,..] [--distances D,..]
+#include "basketball_bench.h"
+#include "bench_command.h"
+
+namespace olympics::bench {
+
+BenchCommand basketball_command(CLI::App& app) {
+  BenchCommand c(app, "basketball",
+                 "basketball: free throws made by policy, 1v1 and 2v2 ticks/s vs bare physics");
+  auto o = std::make_shared<BasketballBenchOptions>();
+  auto& cli = c.cli();
+  cli.add_option("--throws", o->throws, "free throws per policy (seeds 1..N)")
+      ->check(CLI::PositiveNumber);
+  cli.add_option("--policies", o->policies,
+                 "free-throw shooters: scripted, zero, random, mlp:FILE (comma-separated)")
+      ->delimiter(',');
+  cli.add_option("--distances", o->scripted_distances,
+                 "free-throw lines (m from the board) the scripted shooter also shoots from")
+      ->delimiter(',');
+  cli.add_flag("--no-speed{false}", o->speed, "skip the ticks/s measurements");
+  cli.add_option("--seconds", o->seconds, "wall seconds per speed measurement")
+      ->check(CLI::PositiveNumber);
+  cli.add_option("--repeats", o->repeats, "interleaved repeats (median reported)")
+      ->check(CLI::PositiveNumber);
+  c.measure = [o] { return run_basketball_bench(*o); };
+  c.print = print_basketball_report;
+  return c;
+}
+
+}  // namespace olympics::bench

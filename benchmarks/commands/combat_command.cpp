@@ -1,0 +1,27 @@
+// olympics-bench combat [--json] [--bouts N] [--seconds S] [--repeats R]
+#include "bench_command.h"
+#include "combat_bench.h"
+
+namespace olympics::bench {
+
+BenchCommand combat_command(CLI::App& app) {
+  BenchCommand c(app, "combat",
+                 "fencing / boxing: touches and punches per minute by pairing, ticks/s vs bare");
+  auto o = std::make_shared<CombatBenchOptions>();
+  auto& cli = c.cli();
+  cli.add_option("--bouts", o->bouts, "bouts per sport and pairing (seeds 1..N)")
+      ->check(CLI::PositiveNumber);
+  cli.add_option("--challenger", o->challenger,
+                 "measure this policy (mlp:FILE) in slot 0 against scripted");
+  cli.add_option("--sports", o->sports, "fencing, boxing (comma-separated)")->delimiter(',');
+  cli.add_flag("--no-speed{false}", o->speed, "skip the 1v1 ticks/s measurement");
+  cli.add_option("--seconds", o->seconds, "wall seconds per speed measurement")
+      ->check(CLI::PositiveNumber);
+  cli.add_option("--repeats", o->repeats, "interleaved repeats (median reported)")
+      ->check(CLI::PositiveNumber);
+  c.measure = [o] { return run_combat_bench(*o); };
+  c.print = print_combat_report;
+  return c;
+}
+
+}  // namespace olympics::bench

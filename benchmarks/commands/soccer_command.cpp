@@ -1,0 +1,29 @@
+// olympics-bench soccer [--json] [--kicks N] [--matches M] [--half-s S] [--policies P,..]
+#include "bench_command.h"
+#include "soccer_bench.h"
+
+namespace olympics::bench {
+
+BenchCommand soccer_command(CLI::App& app) {
+  BenchCommand c(app, "soccer",
+                 "soccer: penalty kicks scored by policy, scripted goals per 10 min, 2v2 ticks/s");
+  auto o = std::make_shared<SoccerBenchOptions>();
+  auto& cli = c.cli();
+  cli.add_option("--kicks", o->kicks, "penalty kicks per policy (seeds 1..N)")
+      ->check(CLI::PositiveNumber);
+  cli.add_option("--matches", o->matches, "scripted 1v1 and 2v2 matches (seeds 1..M)")
+      ->check(CLI::NonNegativeNumber);
+  cli.add_option("--half-s", o->half_s, "seconds per half of those matches")
+      ->check(CLI::PositiveNumber);
+  cli.add_option("--policies", o->policies, "penalty kickers (comma-separated)")->delimiter(',');
+  cli.add_flag("--no-speed{false}", o->speed, "skip the 2v2 ticks/s measurement");
+  cli.add_option("--seconds", o->seconds, "wall seconds per speed measurement")
+      ->check(CLI::PositiveNumber);
+  cli.add_option("--repeats", o->repeats, "interleaved repeats (median reported)")
+      ->check(CLI::PositiveNumber);
+  c.measure = [o] { return run_soccer_bench(*o); };
+  c.print = print_soccer_report;
+  return c;
+}
+
+}  // namespace olympics::bench
