@@ -307,8 +307,13 @@ Grip hold(double squeeze_deg, double hold_s, Stance stance = Stance::Fixed,
 }
 
 TEST(BasketballGrip, PressedPalmsAndClosedFingersHoldTheBallThreeSecondsAndOpenHandsLetGo) {
+  // The ball settles once between the palms and stays: 5.8 cm from their midpoint with the
+  // FIBA-calibrated restitution 0.795 (2.8 cm with the too lively 0.88 before), the same 5.8 cm
+  // when held 8 s instead of 3; its radius is 12 cm.
   const Grip g = hold(5, 3.0);
-  EXPECT_LT(g.max_slip, 0.05) << "the ball stayed between the palms";
+  std::printf("fixed pelvis, ball's largest distance from the palms' midpoint: %.4f m\n",
+              g.max_slip);
+  EXPECT_LT(g.max_slip, 0.07) << "the ball stayed between the palms";
   EXPECT_GT(g.after_release, 0.3) << "opening the hands let it fall";
 }
 
