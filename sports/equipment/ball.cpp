@@ -16,7 +16,9 @@ namespace olympics::sports::equipment {
 // (tests/sports/soccer_ball_test.cpp).
 BallSpec tennis_ball() { return {"tennis", 0.032, 0.057, 0.775, 0.55, 0.6}; }
 BallSpec table_tennis_ball() { return {"table_tennis", 0.020, 0.0027, 0.94, 0.5, 0.3}; }
-BallSpec soccer_ball() { return {"soccer", 0.115, 0.450, 0.865, 0.25, 0.6, 0.08}; }
+// The soccer ball's radius: Law 2's circumference 68-70 cm gives r 0.108-0.111; 0.110 (69.1 cm).
+// The seed's 0.115 (72.3 cm round) read its "diameter 11.5 cm" as a radius.
+BallSpec soccer_ball() { return {"soccer", 0.110, 0.450, 0.865, 0.25, 0.6, 0.08}; }
 BallSpec basketball() { return {"basketball", 0.12, 0.60, 0.795, 0.5, 1.0}; }
 // No official bounce test for golf balls (SPORTS.md): 0.8 is the original's club-head restitution.
 BallSpec golf_ball() { return {"golf", 0.021, 0.046, 0.8, 0.25, 0.5}; }

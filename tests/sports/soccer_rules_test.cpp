@@ -11,20 +11,25 @@
 namespace olympics::sports::soccer {
 namespace {
 
-constexpr double kR = 0.115;  // the ball's radius
+constexpr double kR = 0.110;  // the ball's radius (Law 2: 68-70 cm round)
 
-TEST(SoccerField, AGoalIsTheWholeBallOverTheLineBetweenThePostsAndUnderTheBar) {
-  Field f;  // goal lines at x = +-16, goal 4 m wide, 2 m high
+TEST(SoccerField, AGoalIsTheWholeBallOverTheWholeLineBetweenThePostsAndUnderTheBar) {
+  Field f;  // goal lines from x = +-16 to +-16.12 (as deep as the posts), goal 4 m by 2 m
   int end = 0;
+  const double line = 16.0 + 2 * f.post_radius;  // the goal line's far edge
+  EXPECT_EQ(f.goal_line_outer(), line);
   EXPECT_EQ(f.crossed({16.0, 0, 0.5}, kR), Crossed::None) << "centre on the line";
-  EXPECT_EQ(f.crossed({16.0 + kR, 0, 0.5}, kR), Crossed::None) << "touching the line";
-  EXPECT_EQ(f.crossed({16.0 + kR + 1e-6, 0, 0.5}, kR, &end), Crossed::Goal);
+  EXPECT_EQ(f.crossed({16.0 + kR + 0.05, 0, 0.5}, kR), Crossed::None)
+      << "past the field's edge but not past the whole line (the posts' depth): no goal yet";
+  EXPECT_EQ(f.crossed({line + kR, 0, 0.5}, kR), Crossed::None) << "touching the line's far edge";
+  EXPECT_EQ(f.crossed({line + kR + 1e-6, 0, 0.5}, kR, &end), Crossed::Goal);
   EXPECT_EQ(end, 1);
-  EXPECT_EQ(f.crossed({-16.2, 1.9, 1.9}, kR, &end), Crossed::Goal);
+  EXPECT_EQ(f.crossed({-16.3, 1.9, 1.9}, kR, &end), Crossed::Goal);
   EXPECT_EQ(end, -1);
   // Wide of a post (centre outside the posts' inner edge) or over the bar: out, no goal.
-  EXPECT_EQ(f.crossed({16.2, 2.01, 0.5}, kR), Crossed::GoalLine);
-  EXPECT_EQ(f.crossed({16.2, 0, 2.05}, kR), Crossed::GoalLine);
+  EXPECT_EQ(f.crossed({16.3, 2.01, 0.5}, kR), Crossed::GoalLine);
+  EXPECT_EQ(f.crossed({16.3, 0, 2.05}, kR), Crossed::GoalLine);
+  EXPECT_EQ(f.crossed({16.2, 3.0, 0.1}, kR), Crossed::None) << "wide, not over the whole line";
   EXPECT_EQ(f.crossed({3, 10.0 + kR, 0.1}, kR), Crossed::None) << "on the touch line";
   EXPECT_EQ(f.crossed({3, -10.2, 0.1}, kR), Crossed::TouchLine);
 }
