@@ -225,6 +225,25 @@ TEST(SoccerRewards, ThePenaltyKickIsStagedByWhetherTheBallNearsTheGoal) {
   EXPECT_EQ(terms[5].weight, 0.0);
 }
 
+TEST(SoccerRewards, AStillBallsJitterDoesNotSwitchTheStage) {
+  // A ball lying still moves by sub-micrometres from tick to tick; towards the goal, that is
+  // g > 0 by a hair. The stage must stay "go to the ball".
+  RewardState jitter = state();
+  jitter.ball_before = jitter.ball;
+  jitter.ball.x() += 3e-7;  // 0.3 micrometre towards the goal
+  jitter.ball_velocity = {1e-5, 0, 0};
+  ASSERT_GT(ball_to_goal(jitter), 0.0);
+  const auto t = penalty_kick_terms(jitter, {5, 0, kR}, false);
+  EXPECT_FLOAT_EQ(t[0], static_cast<float>(player_to_ball(jitter))) << "player_to_ball on";
+  EXPECT_NE(t[0], 0.0f);
+  EXPECT_EQ(t[1], 0.0f);
+  EXPECT_EQ(t[3], 0.0f);
+  // A ball rolling towards the goal at 1 cm/s is past the dead band: the kick stage.
+  RewardState rolling = jitter;
+  rolling.ball.x() = rolling.ball_before.x() + 0.01 / 30;
+  EXPECT_EQ(penalty_kick_terms(rolling, {5, 0, kR}, false)[0], 0.0f);
+}
+
 TEST(SoccerRewards, TeamPlayPaysTheGoalToOneSideAndChargesTheOther) {
   RewardState s = state();
   s.fallen = true;
