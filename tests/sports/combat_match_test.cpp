@@ -130,6 +130,7 @@ TEST(BoxingBout, RoundsEndWithCardsAndStartInTheCorners) {
     if (e["call"] == "punch") {
       ++punches;
       EXPECT_TRUE(kTargets.count(e["body"])) << e.dump();
+      EXPECT_NE(e["body"], "Pelvis") << "below the belt: " << e.dump();
       EXPECT_GE(e["force_n"].get<double>(), 100.0) << e.dump();
     }
     if (e["call"] == "round_end") {
@@ -155,6 +156,14 @@ TEST(BoxingBout, RoundsEndWithCardsAndStartInTheCorners) {
   }
   std::printf("%s after %d punches, cards %g-%g\n", o.reason.c_str(), punches, o.scores[0],
               o.scores[1]);
+}
+
+TEST(BoxingRules, APunchBelowTheBeltDoesNotScore) {
+  EXPECT_FALSE(boxing::scores_punch_on("Pelvis")) << "below the belt";
+  for (const char* body : {"Torso", "Spine", "Chest", "Head"})
+    EXPECT_TRUE(boxing::scores_punch_on(body)) << body;
+  EXPECT_FALSE(boxing::scores_punch_on("L_Thigh"));
+  EXPECT_FALSE(boxing::scores_punch_on("R_Hand"));
 }
 
 TEST(BoxingRules, APunchFromBehindDoesNotScore) {
