@@ -23,9 +23,10 @@ std::vector<SettingSpec> FencingSport::settings() const {
                           "pelvis, torso, spine, chest and head (the seed's), or \"whole_body\" "
                           "(épée's rule)",
                           {"torso", "whole_body"}),
-      SettingSpec::choice("fall_penalty", "touch",
-                          "a fall gives the opponent a touch, or only halts play",
-                          {"touch", "halt"}),
+      SettingSpec::choice("fall_penalty", "halt",
+                          "a fall only halts play (épée's rule), or gives the opponent a touch "
+                          "(a shaping penalty of this project's, not a rule)",
+                          {"halt", "touch"}),
       SettingSpec::number("idle_s", 60.0, "s without a touch: play halts (non-combativity)", 5,
                           600),
       SettingSpec::number("piste_length", 14.0, "m (the seed's 14)", 6, 30),
