@@ -5,8 +5,10 @@
 //                          [--async K]
 //   olympics-bench racket  [--json] [--episodes N] [--seconds S] [--repeats R]
 //   olympics-bench combat  [--json] [--bouts N] [--seconds S] [--repeats R]
-//   olympics-bench soccer  [--json] [--kicks N] [--matches M] [--half-s S] [--policies P,..]
-//   olympics-bench basketball [--json] [--throws N] [--policies P,..] [--distances D,..]
+//   olympics-bench soccer  [--json] [--kicks N | --seeds A-B,..] [--matches M] [--half-s S]
+//                          [--policies P,..]
+//   olympics-bench basketball [--json] [--throws N | --seeds A-B,..] [--policies P,..]
+//                             [--distances D,..]
 //   olympics-bench soak    [--json] [--minutes M] [--matches N] [--workers W] (an hour; not CI)
 //   olympics-bench vector  [--json] [--envs N] [--workers W] [--seconds S] [--async K]
 //                          [--connect URL]
@@ -14,6 +16,7 @@
 #include <cstdio>
 
 #include "basketball_bench.h"
+#include "bench_support.h"
 #include "combat_bench.h"
 #include "physics_bench.h"
 #include "racket_bench.h"
@@ -77,12 +80,24 @@ int main(int argc, char** argv) {
   rack->add_flag("--no-speed{false}", racket.speed, "skip the 1v1 ticks/s measurement");
   rack->add_option("--repeats", racket.repeats, "interleaved repeats (median reported)")
       ->check(CLI::PositiveNumber);
+  // A --seeds value: refused at parsing, saying what was wrong.
+  const auto seed_list = [](const std::string& text) {
+    try {
+      olympics::bench::episode_seeds(text, 0);
+      return std::string();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+  };
   olympics::bench::SoccerBenchOptions soccer;
   auto* socc = app.add_subcommand(
       "soccer", "soccer: penalty kicks scored by policy, scripted goals per 10 min, 2v2 ticks/s");
   socc->add_flag("--json", json, "print one JSON object instead of a table");
   socc->add_option("--kicks", soccer.kicks, "penalty kicks per policy (seeds 1..N)")
       ->check(CLI::PositiveNumber);
+  socc->add_option("--seeds", soccer.seeds,
+                   "penalty kick seeds instead, e.g. 5001-5500,7001-7200 (docs/figures.md)")
+      ->check(seed_list);
   socc->add_option("--matches", soccer.matches, "scripted 1v1 and 2v2 matches (seeds 1..M)")
       ->check(CLI::NonNegativeNumber);
   socc->add_option("--half-s", soccer.half_s, "seconds per half of those matches")
@@ -100,12 +115,17 @@ int main(int argc, char** argv) {
   bask->add_flag("--json", json, "print one JSON object instead of a table");
   bask->add_option("--throws", basketball.throws, "free throws per policy (seeds 1..N)")
       ->check(CLI::PositiveNumber);
+  bask->add_option("--seeds", basketball.seeds,
+                   "free-throw seeds instead, e.g. 5001-5500,7001-7200 (docs/figures.md)")
+      ->check(seed_list);
   bask->add_option("--policies", basketball.policies,
                    "free-throw shooters: scripted, zero, random, mlp:FILE (comma-separated)")
       ->delimiter(',');
   bask->add_option("--distances", basketball.scripted_distances,
                    "free-throw lines (m from the board) the scripted shooter also shoots from")
       ->delimiter(',');
+  bool no_distances = false;
+  bask->add_flag("--no-distances", no_distances, "the scripted shooter from the rule's line only");
   bask->add_flag("--no-speed{false}", basketball.speed, "skip the ticks/s measurements");
   bask->add_option("--seconds", basketball.seconds, "wall seconds per speed measurement")
       ->check(CLI::PositiveNumber);
@@ -207,6 +227,7 @@ int main(int argc, char** argv) {
       olympics::bench::print_soccer_report(report);
   }
   if (*bask) {
+    if (no_distances) basketball.scripted_distances.clear();
     auto report = olympics::bench::run_basketball_bench(basketball);
     if (json)
       std::printf("%s\n", report.dump(2).c_str());
