@@ -4,7 +4,7 @@
 //   olympics-bench server  [--json] [--seconds S] [--matches M] [--workers W] [--vector]
 //                          [--async K]
 //   olympics-bench racket  [--json] [--episodes N] [--seconds S] [--repeats R]
-//   olympics-bench combat  [--json] [--bouts N] [--seconds S] [--repeats R]
+//   olympics-bench combat  [--json] [--bouts N | --seeds A-B,..] [--seconds S] [--repeats R]
 //   olympics-bench soccer  [--json] [--kicks N | --seeds A-B,..] [--matches M] [--half-s S]
 //                          [--policies P,..]
 //   olympics-bench basketball [--json] [--throws N | --seeds A-B,..] [--policies P,..]
@@ -137,6 +137,8 @@ int main(int argc, char** argv) {
   comb->add_flag("--json", json, "print one JSON object instead of a table");
   comb->add_option("--bouts", combat.bouts, "bouts per sport and pairing (seeds 1..N)")
       ->check(CLI::PositiveNumber);
+  comb->add_option("--seeds", combat.seeds, "bout seeds instead, e.g. 5001-5500 (docs/figures.md)")
+      ->check(seed_list);
   comb->add_option("--challenger", combat.challenger,
                    "measure this policy (mlp:FILE) in slot 0 against scripted");
   comb->add_option("--sports", combat.sports, "fencing, boxing (comma-separated)")->delimiter(',');
