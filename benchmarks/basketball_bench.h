@@ -12,7 +12,8 @@
 namespace olympics::bench {
 
 struct BasketballBenchOptions {
-  int throws = 100;  // free throws per policy (seeds 1..N)
+  int throws = 100;   // free throws per policy (seeds 1..N) when `seeds` is empty
+  std::string seeds;  // or the seeds named: "5001-5500,7001-7200" (docs/figures.md)
   std::vector<std::string> policies = {"scripted", "zero", "random"};
   std::vector<double> scripted_distances = {3.6, 4.0, 4.3};  // free-throw lines nearer than 4.6 m
   double seconds = 2;                                        // wall seconds per speed measurement

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "bench_support.h"
+
 namespace olympics::bench {
 
 BenchCommand::BenchCommand(CLI::App& app, const std::string& name, const std::string& summary)
@@ -16,6 +18,21 @@ int BenchCommand::run() const {
   else
     print(report);
   return status(report);
+}
+
+CLI::Option* add_seeds_option(CLI::App& cli, std::string& seeds, const std::string& what) {
+  const auto seed_list = [](const std::string& text) {
+    try {
+      episode_seeds(text, 0);
+      return std::string();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+  };
+  return cli
+      .add_option("--seeds", seeds,
+                  what + " seeds instead, e.g. 5001-5500,7001-7200 (docs/figures.md)")
+      ->check(seed_list);
 }
 
 }  // namespace olympics::bench

@@ -34,4 +34,8 @@ class BenchCommand {
   std::shared_ptr<bool> json_ = std::make_shared<bool>(false);
 };
 
+// Adds a --seeds option (e.g. 5001-5500,7001-7200; docs/figures.md) to `cli`, refused at parsing
+// with what was wrong.
+CLI::Option* add_seeds_option(CLI::App& cli, std::string& seeds, const std::string& what);
+
 }  // namespace olympics::bench

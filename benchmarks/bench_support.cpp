@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 #include <thread>
 
 #include "core/control_rate.h"
@@ -47,6 +48,48 @@ std::unique_ptr<sports::SportMatch> play_in_process(
     if (after_tick) after_tick(*match);
   }
   return match;
+}
+
+std::vector<std::uint64_t> episode_seeds(const std::string& named, int n) {
+  std::vector<std::uint64_t> seeds;
+  if (named.empty()) {
+    for (int k = 1; k <= n; ++k) seeds.push_back(static_cast<std::uint64_t>(k));
+    return seeds;
+  }
+  auto refuse = [&](const std::string& part) {
+    throw std::invalid_argument("seeds \"" + named + "\": \"" + part +
+                                "\" is not a seed or a range like 5001-5500");
+  };
+  std::size_t start = 0;
+  while (start <= named.size()) {
+    const std::size_t comma = std::min(named.find(',', start), named.size());
+    const std::string part = named.substr(start, comma - start);
+    const std::size_t dash = part.find('-');
+    try {
+      std::size_t used = 0;
+      const std::uint64_t first = std::stoull(part.substr(0, dash), &used);
+      if (used != std::min(dash, part.size())) refuse(part);
+      std::uint64_t last = first;
+      if (dash != std::string::npos) {
+        last = std::stoull(part.substr(dash + 1), &used);
+        if (used != part.size() - dash - 1 || last < first) refuse(part);
+      }
+      for (std::uint64_t s = first; s <= last; ++s) seeds.push_back(s);
+    } catch (const std::logic_error&) {  // stoull's invalid_argument and out_of_range
+      refuse(part);
+    }
+    start = comma + 1;
+  }
+  return seeds;
+}
+
+std::array<double, 2> wilson_95(int hits, int n) {
+  if (n <= 0) return {0, 1};
+  constexpr double z = 1.959964;
+  const double p = static_cast<double>(hits) / n, z2 = z * z / n;
+  const double centre = (p + z2 / 2) / (1 + z2);
+  const double half = z * std::sqrt(p * (1 - p) / n + z * z / (4.0 * n * n)) / (1 + z2);
+  return {std::max(0.0, centre - half), std::min(1.0, centre + half)};
 }
 
 double median(std::vector<double> v) {

@@ -2,6 +2,8 @@
 // speed of a sport's 1v1 against the bare physics of the same humanoids.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -27,6 +29,12 @@ std::unique_ptr<sports::SportMatch> play_in_process(
     const std::function<void(const sports::SportMatch&)>& after_tick = {});
 
 double median(std::vector<double> v);
+
+// Episode seeds for a figure (docs/figures.md): "5001-5500,7001-7200" (ranges and single seeds,
+// comma-separated), or empty for 1..n. Throws std::invalid_argument saying what was wrong.
+std::vector<std::uint64_t> episode_seeds(const std::string& named, int n);
+// The Wilson score 95% interval of a rate: `hits` of `n` episodes.
+std::array<double, 2> wilson_95(int hits, int n);
 
 // The sum of `rate(t)` run on `threads` threads at once (t = 0..threads-1): an aggregate rate.
 double sum_over_threads(int threads, const std::function<double(int)>& rate);

@@ -24,11 +24,11 @@ struct BoutStats {
 };
 
 BoutStats play_bouts(const std::string& sport, const std::string& p0, const std::string& p1,
-                     int bouts) {
+                     const std::vector<std::uint64_t>& seeds) {
   const auto& s = sports::sport_or_throw(sport);
   BoutStats st;
-  for (int b = 1; b <= bouts; ++b) {
-    auto match = s.create({"1v1", static_cast<std::uint64_t>(b), 0.0, {}});
+  for (const std::uint64_t b : seeds) {
+    auto match = s.create({"1v1", b, 0.0, {}});
     std::array<std::unique_ptr<client::Policy>, 2> policies = {client::make_policy(p0, 2 * b),
                                                                client::make_policy(p1, 2 * b + 1)};
     for (auto& p : policies) p->start(in_process_match_info(sport, "1v1", *match));
@@ -72,6 +72,7 @@ nlohmann::json to_json(const BoutStats& s, const std::string& sport) {
       {fencing ? "touches_per_min" : "punches_per_min", (s.scored[0] + s.scored[1]) / s.minutes},
       {"falls", s.falls},
       {"wins", s.wins},
+      {"wins_0_ci95", wilson_95(s.wins[0], s.bouts)},  // slot 0's share of bouts won
       {"draws", s.draws}};
   if (fencing) {
     j["hits"] = s.hits;
@@ -87,14 +88,17 @@ nlohmann::json to_json(const BoutStats& s, const std::string& sport) {
 }  // namespace
 
 nlohmann::json run_combat_bench(const CombatBenchOptions& o) {
-  nlohmann::json report = {{"bouts", o.bouts}, {"sports", nlohmann::json::object()}};
+  const std::vector<std::uint64_t> seeds = episode_seeds(o.seeds, o.bouts);
+  nlohmann::json report = {{"bouts", static_cast<int>(seeds.size())},
+                           {"seeds", o.seeds.empty() ? "1-" + std::to_string(o.bouts) : o.seeds},
+                           {"sports", nlohmann::json::object()}};
   std::vector<std::array<std::string, 2>> pairings = {
       {"scripted", "scripted"}, {"scripted", "zero"}, {"random", "random"}};
   if (!o.challenger.empty()) pairings = {{"scripted", "scripted"}, {o.challenger, "scripted"}};
   for (const std::string& sport : o.sports) {
     nlohmann::json& r = report["sports"][sport];
     for (const auto& [a, b] : pairings)
-      r["bouts"][a + "_vs_" + b] = to_json(play_bouts(sport, a, b, o.bouts), sport);
+      r["bouts"][a + "_vs_" + b] = to_json(play_bouts(sport, a, b, seeds), sport);
     if (!o.speed) continue;
     const core::ModelSpec& players =
         sport == "fencing" ? sports::fencing::fencer_model() : sports::boxing::boxer_model(true);
@@ -106,8 +110,8 @@ nlohmann::json run_combat_bench(const CombatBenchOptions& o) {
 void print_combat_report(const nlohmann::json& report) {
   for (const auto& [sport, r] : report["sports"].items()) {
     const bool fencing = sport == "fencing";
-    std::printf("%s, %d bouts per pairing (seeds 1..%d)\n", sport.c_str(),
-                report["bouts"].get<int>(), report["bouts"].get<int>());
+    std::printf("%s, %d bouts per pairing (seeds %s)\n", sport.c_str(), report["bouts"].get<int>(),
+                report["seeds"].get<std::string>().c_str());
     for (const auto& [pairing, s] : r["bouts"].items()) {
       const auto& scored = s[fencing ? "touches" : "scoring_punches"];
       std::printf("  %-20s %6.1f min: %s %d-%d (%.1f/min)", pairing.c_str(),
@@ -121,9 +125,10 @@ void print_combat_report(const nlohmann::json& report) {
       else
         std::printf(", knock-downs %d-%d, knock-outs %d", s["knockdowns"][0].get<int>(),
                     s["knockdowns"][1].get<int>(), s["knockouts"].get<int>());
-      std::printf(", falls %d-%d, wins %d-%d, draws %d\n", s["falls"][0].get<int>(),
-                  s["falls"][1].get<int>(), s["wins"][0].get<int>(), s["wins"][1].get<int>(),
-                  s["draws"].get<int>());
+      std::printf(", falls %d-%d, wins %d-%d (slot 0: 95%% interval %.0f-%.0f%%), draws %d\n",
+                  s["falls"][0].get<int>(), s["falls"][1].get<int>(), s["wins"][0].get<int>(),
+                  s["wins"][1].get<int>(), 100 * s["wins_0_ci95"][0].get<double>(),
+                  100 * s["wins_0_ci95"][1].get<double>(), s["draws"].get<int>());
     }
     if (!r.contains("speed_1v1")) continue;
     const auto& v = r["speed_1v1"];

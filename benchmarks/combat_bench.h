@@ -12,7 +12,8 @@
 namespace olympics::bench {
 
 struct CombatBenchOptions {
-  int bouts = 100;     // per sport and pairing
+  int bouts = 100;     // per sport and pairing (seeds 1..N) when `seeds` is empty
+  std::string seeds;   // or the seeds named: "5001-5500" (docs/figures.md)
   double seconds = 2;  // wall seconds per speed measurement
   int repeats = 3;     // interleaved repeats (median reported)
   // A policy to measure (mlp:FILE: a trained snapshot) in slot 0 against the scripted baseline,

@@ -31,13 +31,14 @@ nlohmann::json play(const std::string& mode, std::uint64_t seed,
           {"goals", o.info.value("goals", nlohmann::json::array())}};
 }
 
-nlohmann::json penalty_kicks(const std::string& policy, int kicks) {
+nlohmann::json penalty_kicks(const std::string& policy, const std::vector<std::uint64_t>& seeds) {
   int scored = 0, touched = 0;
   double seconds_to_goal = 0;
   std::map<std::string, int> calls, endings;
-  for (int k = 1; k <= kicks; ++k) {
+  const int kicks = static_cast<int>(seeds.size());
+  for (const std::uint64_t seed : seeds) {
     std::vector<int> touch;
-    const auto r = play("penalty_kick", k, {policy}, {}, calls, touch);
+    const auto r = play("penalty_kick", seed, {policy}, {}, calls, touch);
     const bool goal = r["reason"] == "goal";
     scored += goal;
     touched += touch[0];
@@ -46,6 +47,7 @@ nlohmann::json penalty_kicks(const std::string& policy, int kicks) {
   }
   return {{"kicks", kicks},
           {"scored", static_cast<double>(scored) / kicks},
+          {"scored_ci95", wilson_95(scored, kicks)},
           {"touched", static_cast<double>(touched) / kicks},
           {"falls", calls["fall"]},
           {"mean_s_to_goal", scored ? seconds_to_goal / scored : 0.0},
@@ -85,8 +87,10 @@ nlohmann::json scripted_matches(const std::string& mode, int matches, double hal
 }  // namespace
 
 nlohmann::json run_soccer_bench(const SoccerBenchOptions& o) {
-  nlohmann::json report = {{"penalty_kick", nlohmann::json::object()}};
-  for (const auto& p : o.policies) report["penalty_kick"][p] = penalty_kicks(p, o.kicks);
+  const std::vector<std::uint64_t> seeds = episode_seeds(o.seeds, o.kicks);
+  nlohmann::json report = {{"penalty_kick", nlohmann::json::object()},
+                           {"seeds", o.seeds.empty() ? "1-" + std::to_string(o.kicks) : o.seeds}};
+  for (const auto& p : o.policies) report["penalty_kick"][p] = penalty_kicks(p, seeds);
   for (const char* mode : {"1v1", "2v2"})
     report["scripted_" + std::string(mode)] = scripted_matches(mode, o.matches, o.half_s);
   if (o.speed) {
@@ -97,11 +101,13 @@ nlohmann::json run_soccer_bench(const SoccerBenchOptions& o) {
 }
 
 void print_soccer_report(const nlohmann::json& r) {
+  std::printf("penalty kick seeds %s\n", r["seeds"].get<std::string>().c_str());
   for (const auto& [policy, k] : r["penalty_kick"].items()) {
     std::printf(
-        "penalty kick, %-9s %d kicks: scored %.0f%%, touched %.0f%%, falls %d, %.1f s to "
-        "a goal; endings %s\n",
+        "penalty kick, %-9s %d kicks: scored %.1f%% (95%% interval %.1f-%.1f%%), touched %.0f%%, "
+        "falls %d, %.1f s to a goal; endings %s\n",
         policy.c_str(), k["kicks"].get<int>(), 100 * k["scored"].get<double>(),
+        100 * k["scored_ci95"][0].get<double>(), 100 * k["scored_ci95"][1].get<double>(),
         100 * k["touched"].get<double>(), k["falls"].get<int>(), k["mean_s_to_goal"].get<double>(),
         k["endings"].dump().c_str());
   }

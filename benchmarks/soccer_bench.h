@@ -12,7 +12,8 @@
 namespace olympics::bench {
 
 struct SoccerBenchOptions {
-  int kicks = 100;      // penalty kicks per policy (seeds 1..N)
+  int kicks = 100;      // penalty kicks per policy (seeds 1..N) when `seeds` is empty
+  std::string seeds;    // or the seeds named: "5001-5500" (docs/figures.md)
   int matches = 3;      // scripted matches per team mode (seeds 1..N)
   double half_s = 120;  // of each match (two halves)
   std::vector<std::string> policies = {"scripted", "zero", "random"};

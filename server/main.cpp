@@ -75,8 +75,9 @@ int describe_one(const sports::Sport& sport, const std::string& mode_arg) {
   if (!settings.empty()) {
     std::printf("settings (a match request's options, JSON):\n");
     for (const auto& s : settings)
-      std::printf("  %-22s = %-10s %s [%s]\n", s.key.c_str(), s.default_value.dump().c_str(),
-                  s.meaning.c_str(), s.allowed().c_str());
+      std::printf("  %-22s = %-10s %s [%s]%s\n", s.key.c_str(), s.default_value.dump().c_str(),
+                  s.meaning.c_str(), s.allowed().c_str(),
+                  s.official ? ("; official " + s.official->dump()).c_str() : "");
   }
   std::vector<std::string> modes =
       mode_arg.empty() ? sport.modes().names() : std::vector<std::string>{mode_arg};

@@ -65,11 +65,14 @@ double observation_bound(const LayoutBlock& block) {
 
 nlohmann::json describe_sport(const Sport& sport, const std::string& mode) {
   nlohmann::json settings = nlohmann::json::array();
-  for (const auto& s : sport.settings())
-    settings.push_back({{"key", s.key},
-                        {"default", s.default_value},
-                        {"meaning", s.meaning},
-                        {"allowed", s.allowed()}});
+  for (const auto& s : sport.settings()) {
+    nlohmann::json setting = {{"key", s.key},
+                              {"default", s.default_value},
+                              {"meaning", s.meaning},
+                              {"allowed", s.allowed()}};
+    if (s.official) setting["official"] = *s.official;  // what "rules": "official" sets
+    settings.push_back(std::move(setting));
+  }
   nlohmann::json modes = nlohmann::json::array();
   if (mode.empty())
     for (const auto& spec : sport.modes().all()) modes.push_back(mode_json(sport, spec));

@@ -132,6 +132,18 @@ SettingSpec SettingSpec::choice(std::string key, std::string value, std::string 
   return s;
 }
 
+SettingSpec SettingSpec::with_official(nlohmann::json value) && {
+  official = std::move(value);
+  return std::move(*this);
+}
+
+SettingSpec SettingSpec::rules_preset() {
+  return choice("rules", "paper",
+                "\"paper\": the seed's values (the defaults); \"official\": the rulebook's for "
+                "every setting where they differ (a setting given beside it still wins)",
+                {"paper", "official"});
+}
+
 std::string SettingSpec::allowed() const {
   if (!choices.empty()) {
     std::string text;
@@ -187,6 +199,9 @@ nlohmann::json merge_settings(const std::string& sport, const std::vector<Settin
       refuse(spec->allowed());
     merged[key] = value;
   }
+  if (merged.contains("rules") && merged["rules"] == "official")
+    for (const auto& s : specs)
+      if (s.official && !options.contains(s.key)) merged[s.key] = *s.official;
   return merged;
 }
 

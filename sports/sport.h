@@ -145,17 +145,27 @@ struct SettingSpec {
   std::string meaning;
   std::optional<double> min, max;    // a number: its allowed range (an integer default: integers)
   std::vector<std::string> choices;  // a string: its allowed values
-  std::string allowed() const;       // "1..45", "\"torso\" or \"whole_body\"", ...
+  // The rulebook's value, where it differs from the default (the seed's, "paper"): what the
+  // `rules` preset "official" sets unless the request sets this key itself.
+  std::optional<nlohmann::json> official;
+  std::string allowed() const;  // "1..45", "\"torso\" or \"whole_body\"", ...
 
   static SettingSpec number(std::string key, nlohmann::json value, std::string meaning, double min,
                             double max);
   static SettingSpec choice(std::string key, std::string value, std::string meaning,
                             std::vector<std::string> choices);
+  // This setting with the rulebook's value `value` (the preset "official" sets it).
+  SettingSpec with_official(nlohmann::json value) &&;
+  // The preset every sport has: "paper" (the default: the seed's values, as the SMPLOlympics
+  // paper has them) or "official" (every setting with an official value takes it at once).
+  static SettingSpec rules_preset();
 };
 
 // Returns `options` over the defaults; throws std::invalid_argument naming the setting and what
 // it takes when a key is unknown, a value has another JSON type than its default, a number is
 // out of range (or not whole where the default is) or a string is not one of the choices.
+// With "rules": "official" the settings' official values replace their defaults; a key the
+// request sets itself keeps the request's value.
 nlohmann::json merge_settings(const std::string& sport, const std::vector<SettingSpec>& specs,
                               const nlohmann::json& options);
 

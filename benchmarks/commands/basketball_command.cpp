@@ -1,4 +1,5 @@
-// olympics-bench basketball [--json] [--throws N] [--policies P,..] [--distances D,..]
+// olympics-bench basketball [--json] [--throws N | --seeds A-B,..] [--policies P,..]
+//                           [--distances D,.. | --no-distances]
 #include "basketball_bench.h"
 #include "bench_command.h"
 
@@ -11,18 +12,24 @@ BenchCommand basketball_command(CLI::App& app) {
   auto& cli = c.cli();
   cli.add_option("--throws", o->throws, "free throws per policy (seeds 1..N)")
       ->check(CLI::PositiveNumber);
+  add_seeds_option(cli, o->seeds, "free-throw");
   cli.add_option("--policies", o->policies,
                  "free-throw shooters: scripted, zero, random, mlp:FILE (comma-separated)")
       ->delimiter(',');
   cli.add_option("--distances", o->scripted_distances,
                  "free-throw lines (m from the board) the scripted shooter also shoots from")
       ->delimiter(',');
+  auto no_distances = std::make_shared<bool>(false);
+  cli.add_flag("--no-distances", *no_distances, "the scripted shooter from the rule's line only");
   cli.add_flag("--no-speed{false}", o->speed, "skip the ticks/s measurements");
   cli.add_option("--seconds", o->seconds, "wall seconds per speed measurement")
       ->check(CLI::PositiveNumber);
   cli.add_option("--repeats", o->repeats, "interleaved repeats (median reported)")
       ->check(CLI::PositiveNumber);
-  c.measure = [o] { return run_basketball_bench(*o); };
+  c.measure = [o, no_distances] {
+    if (*no_distances) o->scripted_distances.clear();
+    return run_basketball_bench(*o);
+  };
   c.print = print_basketball_report;
   return c;
 }

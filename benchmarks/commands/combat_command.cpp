@@ -1,4 +1,4 @@
-// olympics-bench combat [--json] [--bouts N] [--seconds S] [--repeats R]
+// olympics-bench combat [--json] [--bouts N | --seeds A-B,..] [--seconds S] [--repeats R]
 #include "bench_command.h"
 #include "combat_bench.h"
 
@@ -11,6 +11,7 @@ BenchCommand combat_command(CLI::App& app) {
   auto& cli = c.cli();
   cli.add_option("--bouts", o->bouts, "bouts per sport and pairing (seeds 1..N)")
       ->check(CLI::PositiveNumber);
+  add_seeds_option(cli, o->seeds, "bout");
   cli.add_option("--challenger", o->challenger,
                  "measure this policy (mlp:FILE) in slot 0 against scripted");
   cli.add_option("--sports", o->sports, "fencing, boxing (comma-separated)")->delimiter(',');

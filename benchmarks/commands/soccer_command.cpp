@@ -1,4 +1,5 @@
-// olympics-bench soccer [--json] [--kicks N] [--matches M] [--half-s S] [--policies P,..]
+// olympics-bench soccer [--json] [--kicks N | --seeds A-B,..] [--matches M] [--half-s S]
+//                       [--policies P,..]
 #include "bench_command.h"
 #include "soccer_bench.h"
 
@@ -11,6 +12,7 @@ BenchCommand soccer_command(CLI::App& app) {
   auto& cli = c.cli();
   cli.add_option("--kicks", o->kicks, "penalty kicks per policy (seeds 1..N)")
       ->check(CLI::PositiveNumber);
+  add_seeds_option(cli, o->seeds, "penalty kick");
   cli.add_option("--matches", o->matches, "scripted 1v1 and 2v2 matches (seeds 1..M)")
       ->check(CLI::NonNegativeNumber);
   cli.add_option("--half-s", o->half_s, "seconds per half of those matches")

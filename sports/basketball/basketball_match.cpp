@@ -59,10 +59,16 @@ std::vector<RefereeCall> basketball_calls() {
        "(slot: the shooter)",
        kAnnounced},
       {"out", "the ball touched the floor outside the lines (last_touch_slot)", kAnnounced},
+      {"from_below",
+       "the ball went up through the rim from below: a violation, no basket; the other side's "
+       "ball (last_touch_slot)",
+       kAnnounced},
       {"shot_clock", "the side with the ball did not get a shot to the basket in time (team)",
        kAnnounced},
       {"restart", "play restarts (kind: check_ball or after_basket; team, x, y)", kAnnounced},
-      {"miss", "free throw: the ball came down on the floor or left the court without a basket",
+      {"miss",
+       "free throw: the ball came down on the floor, left the court or went up through the rim "
+       "without a basket (where: floor, off_court, from_below)",
        kAnnounced},
       {"fall", "a player fell (body)"},
       {"stood_up", "team play with falls: stand_up: a player down 2 s was stood up where it lay"}};
@@ -73,7 +79,8 @@ BasketballMatch::BasketballMatch(const BasketballConfig& config, const ModeSpec&
     : SmplMatch(mode, std::move(layout), settings),
       config_(config),
       team_play_(is_team_play(mode.name)),
-      referee_(config.court, config.rules, mode.slot_teams) {
+      referee_(config.court, config.rules, mode.slot_teams),
+      watch_(config.court) {
   config_.court.build(scene().world());
   for (int s = 0; s < slot_count(); ++s) add_player(player_model(), {});
   ball_ = std::make_unique<equipment::Ball>(scene().world(), equipment::basketball(),
@@ -111,6 +118,7 @@ void BasketballMatch::present_to(int slot, const core::RootPlacement& at) {
   present_ = {spot.x(), spot.y(), kPresentHeight};
   present_until_ = time() + config_.present_s;
   ball_->set_state(present_, Eigen::Vector3d::Zero());
+  watch_.reset();
 }
 
 // The taker (the taking side's player nearest the spot) on the spot, facing as the referee says
@@ -155,12 +163,14 @@ void BasketballMatch::after_physics_step(double step_start) {
     return;
   }
   const Eigen::Vector3d now = ball_->position();
-  if (const int b = config_.court.basket_through(ball_before_step_, now); b >= 0)
-    basket_this_tick_ = b;
+  const RimPassage passage = watch_.step(ball_before_step_, now);
+  if (passage.basket >= 0) basket_this_tick_ = passage.basket;
+  if (passage.from_below >= 0 && from_below_this_tick_ < 0)
+    from_below_this_tick_ = passage.from_below;
   if (!team_play_) {
     if (now.z() - ball_->spec().radius < kFloorTouch) touched_floor_ = true;
     for (const auto& c : scene().world().sensed_contacts())
-      if (c.other && c.other->entity >= 0) shooter_touch_s_ = step_start;
+      if (c.other && c.other->entity >= 0) shooter_touch_s_ = step_start, watch_.reset();
     return;
   }
   for (const auto& c : scene().world().sensed_contacts()) {
@@ -170,6 +180,7 @@ void BasketballMatch::after_physics_step(double step_start) {
       referee_.basket_touch();
     } else if (const int s = slot_of_entity(c.other->entity); s >= 0) {
       referee_.touch(s, player(s).body_state(0).position.head<2>(), time());
+      watch_.reset();
     }
   }
 }
@@ -191,9 +202,15 @@ void BasketballMatch::settle_tick() {
 }
 
 void BasketballMatch::settle_free_throw() {
-  const bool basket = basket_this_tick_ >= 0;
-  basket_this_tick_ = -1;
+  const bool basket = basket_this_tick_ >= 0, from_below = from_below_this_tick_ >= 0;
+  basket_this_tick_ = from_below_this_tick_ = -1;
   set_reward(0, free_throw_terms(ball_->position(), ball_->velocity(), target(), basket));
+  if (from_below) {  // a violation: the throw is over, no basket
+    nlohmann::json e = referee_event("miss", time());
+    e["where"] = "from_below";
+    log(std::move(e));
+    return outcome_.end("missed", -1);
+  }
   if (basket) {
     outcome_.scores[0] = 1;
     nlohmann::json e = referee_event("basket", time(), 0);
@@ -231,9 +248,11 @@ void BasketballMatch::settle_team_play() {
   const std::array<int, 2> before = referee_.score();
   std::vector<TeamPlayState> states;  // possession as it was during the tick
   for (int s = 0; s < slot_count(); ++s) states.push_back(reward_state(s));
-  const auto stop =
-      referee_.update(basket_this_tick_ >= 0, out_this_tick_, time(), basket_this_tick_);
-  basket_this_tick_ = -1;
+  const std::optional<Stoppage> stop =
+      from_below_this_tick_ >= 0
+          ? std::optional<Stoppage>(referee_.from_below(time()))
+          : referee_.update(basket_this_tick_ >= 0, out_this_tick_, time(), basket_this_tick_);
+  basket_this_tick_ = from_below_this_tick_ = -1;
   out_this_tick_ = false;
   const std::array<int, 2>& score = referee_.score();
   const std::array<int, 2> scored = {score[0] - before[0], score[1] - before[1]};
@@ -275,6 +294,10 @@ void BasketballMatch::log_stoppage(const Stoppage& s) {
                           {"score", score_json()["text"]}});
   } else if (s.reason == "out") {
     nlohmann::json e = referee_event("out", time());
+    e["last_touch_slot"] = s.last_touch;
+    log(std::move(e));
+  } else if (s.reason == "from_below") {
+    nlohmann::json e = referee_event("from_below", time());
     e["last_touch_slot"] = s.last_touch;
     log(std::move(e));
   } else if (s.reason == "shot_clock") {

@@ -18,6 +18,7 @@
 #include <memory>
 #include <random>
 
+#include "basketball/basket_watch.h"
 #include "basketball/basketball_referee.h"
 #include "basketball/basketball_rewards.h"
 #include "basketball/court.h"
@@ -92,16 +93,18 @@ class BasketballMatch : public SmplMatch {
   bool team_play_;
   std::unique_ptr<equipment::Ball> ball_;
   BasketballReferee referee_;
+  BasketWatch watch_;
   Eigen::Vector3d present_ = Eigen::Vector3d::Zero();
   double present_until_ = 0;
   int presented_slot_ = -1;
   Eigen::Vector3d ball_before_step_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d ball_before_tick_ = Eigen::Vector3d::Zero();
   std::vector<Eigen::Vector3d> root_before_;
-  int basket_this_tick_ = -1;   // which basket the ball went down through this tick, if any
-  bool touched_floor_ = false;  // free throw: after the presentation
-  double shooter_touch_s_ = 0;  // free throw: when the ball last touched the shooter
-  bool out_this_tick_ = false;  // team play: the ball on the floor outside the lines
+  int basket_this_tick_ = -1;      // which basket the ball went down through this tick, if any
+  int from_below_this_tick_ = -1;  // which rim it went up through from below this tick, if any
+  bool touched_floor_ = false;     // free throw: after the presentation
+  double shooter_touch_s_ = 0;     // free throw: when the ball last touched the shooter
+  bool out_this_tick_ = false;     // team play: the ball on the floor outside the lines
   nlohmann::json baskets_ = nlohmann::json::array();     // every counted basket, for the result
   nlohmann::json stoppages_ = nlohmann::json::object();  // reason -> count
 };

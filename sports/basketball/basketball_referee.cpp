@@ -111,6 +111,12 @@ std::optional<Stoppage> BasketballReferee::full_court_basket(int basket_index, d
   return s;
 }
 
+Stoppage BasketballReferee::from_below(double t) {
+  const int touched = last_touch_ >= 0 ? team(last_touch_) : possession_;
+  return stop("from_below", court_.full ? RestartKind::ThrowIn : RestartKind::CheckBall,
+              other(touched), t);
+}
+
 std::optional<Stoppage> BasketballReferee::update(bool basket, bool out, double t,
                                                   int basket_index) {
   const RestartKind restart = court_.full ? RestartKind::ThrowIn : RestartKind::CheckBall;

@@ -16,7 +16,8 @@
 //   basket stops it, the next touch starts it again. When it runs out: the other side's check
 //   ball.
 // - The ball on the floor outside the lines: the other side's check ball (the side that did not
-//   touch it last).
+//   touch it last). So too the ball passing up through the rim from below (FIBA art. 16: a
+//   violation, never a basket; BasketWatch follows it back down so that it cannot count).
 // - Check ball: at the top of the arc, already cleared. The game ends when a side reaches
 //   `points_to_win`; the match's time limit is the game's clock.
 //
@@ -64,7 +65,7 @@ struct BasketCall {
 
 // Why play stopped this tick, and how it restarts.
 struct Stoppage {
-  std::string reason;  // "basket", "not_cleared", "out", "shot_clock"
+  std::string reason;  // "basket", "not_cleared", "out", "shot_clock", "from_below"
   std::optional<BasketCall> basket;
   int last_touch = -1;  // slot
   Restart restart;
@@ -84,6 +85,9 @@ class BasketballReferee {
   // After each tick: did the ball go down through a rim (which: `basket_index`), did it touch
   // the floor outside the lines. A stoppage, if play stopped.
   std::optional<Stoppage> update(bool basket, bool out, double t, int basket_index = 0);
+  // The ball went up through a rim from below (FIBA art. 16): a violation, no basket; the
+  // other side's ball (the side that did not touch it last), as after the ball out.
+  Stoppage from_below(double t);
   // The basket `team` attacks (0 on the half court).
   int attacks(int team) const { return court_.full ? team : 0; }
 

@@ -16,7 +16,10 @@ BasketballSport::BasketballSport()
                "court's)"}}) {}
 
 std::vector<SettingSpec> BasketballSport::settings() const {
+  // The seed's court, ball and basket are FIBA's, and the game FIBA 3x3's (10 minutes, 21
+  // points, a 12 s shot clock): "official" changes nothing.
   return {
+      SettingSpec::rules_preset(),
       SettingSpec::number("rim_height", 3.05, "m, the rim above the floor (the original's 2.8)",
                           2.0, 3.5),
       SettingSpec::number("free_throw_distance", 4.6, "m from the backboard's plane to the line",

@@ -31,13 +31,22 @@ bool Court::inside(const Eigen::Vector2d& p) const {
   return p.x() <= baseline_x() && p.x() >= far_line_x() && std::abs(p.y()) <= width / 2;
 }
 
-int Court::basket_through(const Eigen::Vector3d& before, const Eigen::Vector3d& after) const {
-  if (!(before.z() >= rim_height && after.z() < rim_height)) return -1;
-  const double f = (before.z() - rim_height) / (before.z() - after.z());
-  const Eigen::Vector2d at = before.head<2>() + f * (after - before).head<2>();
+int Court::rim_crossed(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const {
+  const double f = (from.z() - rim_height) / (from.z() - to.z());
+  const Eigen::Vector2d at = from.head<2>() + f * (to - from).head<2>();
   for (int b = 0; b < baskets(); ++b)
     if ((at - rim_centre(b).head<2>()).norm() < rim_radius) return b;
   return -1;
+}
+
+int Court::basket_through(const Eigen::Vector3d& before, const Eigen::Vector3d& after) const {
+  if (!(before.z() >= rim_height && after.z() < rim_height)) return -1;
+  return rim_crossed(before, after);
+}
+
+int Court::basket_from_below(const Eigen::Vector3d& before, const Eigen::Vector3d& after) const {
+  if (!(before.z() < rim_height && after.z() >= rim_height)) return -1;
+  return rim_crossed(before, after);
 }
 
 std::vector<Court::Part> Court::parts() const {

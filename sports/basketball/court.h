@@ -61,6 +61,9 @@ struct Court {
   // through a rim's plane inside the rim (centre within the inner radius where it crossed)?
   // Which basket (0, 1), else -1.
   int basket_through(const Eigen::Vector3d& before, const Eigen::Vector3d& after) const;
+  // Did it pass upward through a rim's plane inside the rim (entering the basket from below, a
+  // violation: FIBA Official Rules art. 31.2.4 and 3x3 likewise)? Which basket, else -1.
+  int basket_from_below(const Eigen::Vector3d& before, const Eigen::Vector3d& after) const;
 
   struct Part {
     enum Kind { Rim, Board, Pole } kind;
@@ -74,6 +77,8 @@ struct Court {
 
  private:
   std::vector<Part> one_basket() const;  // basket 0's rim, bracket, board and pole
+  // The basket whose rim's plane the segment crosses inside the rim, else -1.
+  int rim_crossed(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const;
 };
 
 }  // namespace olympics::sports::basketball

@@ -1,5 +1,6 @@
 #include "boxing/boxing_match.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "boxing/gloves.h"
@@ -22,6 +23,12 @@ const core::ModelSpec& boxer_model(bool both_gloves) {
   };
   static const core::ModelSpec two = build(true), one = build(false);
   return both_gloves ? two : one;
+}
+
+bool scores_punch_on(const std::string& body) {
+  if (body == "Pelvis") return false;
+  return std::find(combat::kTargetBodies.begin(), combat::kTargetBodies.end(), body) !=
+         combat::kTargetBodies.end();
 }
 
 bool from_front_or_side(const Eigen::Vector3d& normal, const Eigen::Quaterniond& defender) {
@@ -71,7 +78,7 @@ BoxingMatch::BoxingMatch(const BoxingConfig& config, const ModeSpec& mode, Layou
   for (int b = 0; b < 2; ++b) add_player(spec, corner(b));
   config_.ring.build(scene().world());
   std::vector<bool> is_target(spec.bodies.size(), false);
-  for (int b : targets_) is_target[b] = true;
+  for (int b : targets_) is_target[b] = scores_punch_on(spec.bodies[b].name);
   touches_.emplace(
       std::vector<int>{player(0).entity(), player(1).entity()}, teams(),
       [is_target](int body, int) { return is_target[body]; }, config_.punch_force_n,

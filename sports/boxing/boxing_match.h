@@ -23,6 +23,11 @@ struct BoxingConfig {
   double punch_refractory_s = 0.3;  // one glove scores at most this often
 };
 
+// Does a punch on this body score? The seed's targets (combat_observation.h) less the pelvis:
+// it is below the belt, where a blow is a foul, never a point (AIBA's and the professional
+// rules). The pelvis stays in the observation and in eq. 9-10's r_strike, as the seed has them.
+bool scores_punch_on(const std::string& body);
+
 // The SMPL humanoid with gloves on both hands, or on the right only.
 const core::ModelSpec& boxer_model(bool both_gloves);
 

@@ -50,7 +50,9 @@ void BoxingReferee::update(double time, const std::array<bool, 2>& down) {
     } else if (up_since_[b] < 0) {
       up_since_[b] = time;
     }
-    if (up_since_[b] >= 0 && time - up_since_[b] >= rules_.up_s) {
+    const double mandatory = std::min(rules_.mandatory_count_s, rules_.count_s);
+    if (up_since_[b] >= 0 && time - up_since_[b] >= rules_.up_s &&
+        time - down_since_[b] >= mandatory) {
       down_since_[b] = -1;
       calls_.push_back({"up", b, time, round_, {}});
     }

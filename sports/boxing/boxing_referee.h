@@ -5,8 +5,10 @@
 // - Rounds of `round_s` with `rest_s` between them (the match puts both boxers back in their
 //   corners at the start of a rest and of a round).
 // - A knock-down: a boxer down (any body but the feet on the canvas) during a round. The count
-//   starts; the boxer beats it by being up (not down) for `up_s` in a row. Still not up
-//   `count_s` after going down: knock-out, the bout is over.
+//   starts; the boxer beats it by being up (not down) for `up_s` in a row, and never before the
+//   mandatory count of eight (`mandatory_count_s`: a knocked-down boxer is counted to eight even
+//   if up at once, AIBA's and the professional rules alike). Still not up `count_s` after going
+//   down: knock-out, the bout is over.
 // - Punches landed on a boxer who is down do not score (the match does not report them).
 // - Each round is scored 10-point-must: the boxer with more scoring punches 10, the other 9,
 //   both 10 when level; every knock-down suffered in the round costs a point (never below 6).
@@ -23,6 +25,7 @@ struct BoxingRules {
   int rounds = 3;
   double round_s = 60, rest_s = 10;
   double count_s = 10, up_s = 1;
+  double mandatory_count_s = 8;  // the count goes on at least this long (capped at count_s)
 };
 
 // Something the referee called, for the match to log.

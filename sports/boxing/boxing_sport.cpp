@@ -8,8 +8,11 @@ BoxingSport::BoxingSport() : modes_("boxing", {{"1v1", {0, 1}, "a bout between t
 
 std::vector<SettingSpec> BoxingSport::settings() const {
   return {
-      SettingSpec::number("ring_size", 5.0, "m inside the ropes (the seed's 5; real 4.9-6.1)", 3,
-                          8),
+      SettingSpec::rules_preset(),
+      SettingSpec::number("ring_size", 5.0,
+                          "m inside the ropes (the seed's 5; AIBA 6.10, professional 4.88-7.32)", 3,
+                          8)
+          .with_official(6.10),  // AIBA Technical Rules: 6.10 m inside the ropes
       SettingSpec::choice("gloves", "both", "both hands gloved, or the seed's \"right\" only",
                           {"both", "right"}),
       SettingSpec::number("punch_force_n", 100.0, "N: a glove's contact force that scores", 1,
@@ -17,9 +20,15 @@ std::vector<SettingSpec> BoxingSport::settings() const {
       SettingSpec::number("punch_refractory_s", 0.3, "s: one glove scores at most this often", 0.05,
                           2),
       SettingSpec::number("rounds", 3, "rounds in the bout", 1, 12),
-      SettingSpec::number("round_s", 60.0, "s a round lasts (real: 180, amateur 120-180)", 5, 300),
-      SettingSpec::number("rest_s", 10.0, "s of rest between rounds (real: 60)", 0, 120),
+      SettingSpec::number("round_s", 60.0, "s a round lasts (real: 180, amateur 120-180)", 5, 300)
+          .with_official(180.0),  // AIBA: 3 rounds of 3 minutes
+      SettingSpec::number("rest_s", 10.0, "s of rest between rounds (real: 60)", 0, 120)
+          .with_official(60.0),  // AIBA: 1 minute between rounds
       SettingSpec::number("count_s", 10.0, "s a knocked-down boxer has to get up", 1, 30),
+      SettingSpec::number("mandatory_count_s", 8.0,
+                          "s a knocked-down boxer is counted even if up at once (the mandatory "
+                          "eight count; 0: none)",
+                          0, 30),
   };
 }
 
@@ -34,6 +43,7 @@ BoxingConfig BoxingSport::config(const nlohmann::json& options) const {
   c.rules.round_s = s.at("round_s");
   c.rules.rest_s = s.at("rest_s");
   c.rules.count_s = s.at("count_s");
+  c.rules.mandatory_count_s = s.at("mandatory_count_s");
   return c;
 }
 

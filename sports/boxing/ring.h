@@ -1,4 +1,5 @@
-// The boxing ring (SPORTS.md: 5 x 5 m, the seed's; real rings 4.9-6.1 m inside the ropes),
+// The boxing ring (SPORTS.md: 5 x 5 m, the seed's; AIBA's 6.10 m inside the ropes, professional
+// rings 4.88-7.32 m),
 // centred on the origin: four ropes a side at 0.4, 0.7, 1.0 and 1.3 m (AIBA's heights) and a
 // post at each corner, as real (rigid) collision geometry. Boxer 0 starts at x = -start facing
 // +x, boxer 1 at x = +start facing -x (combat/start_placement.h).

@@ -10,7 +10,9 @@
 //   annulled (no score), as the FIE rules say of a tied last touch.
 // - Leaving the piste halts play without a score (the seed: both fencers go back to their
 //   lines), unless a touch was already made.
-// - A fall halts play; with the "touch" penalty the opponent scores (both at once: no score).
+// - A fall halts play without a score (épée has no touch for a fall: the referee halts the bout);
+//   the project's "touch" penalty, a setting, gives the opponent a touch instead (both at once:
+//   no score).
 // - No touch for `idle_s` (non-combativity) halts play without a score.
 // - After every halt both fencers go back to their on-guard lines (the match does that) and
 //   next_exchange() resumes play. The bout ends when a fencer reaches `touches`.
@@ -29,7 +31,7 @@ enum class FallPenalty { Touch, Halt };
 struct FencingRules {
   int touches = 5;
   double double_window_s = 0.04;
-  FallPenalty fall_penalty = FallPenalty::Touch;
+  FallPenalty fall_penalty = FallPenalty::Halt;
   double idle_s = 60;
 };
 

@@ -10,22 +10,26 @@ FencingSport::FencingSport() : modes_("fencing", {{"1v1", {0, 1}, "a bout betwee
 
 std::vector<SettingSpec> FencingSport::settings() const {
   return {
+      SettingSpec::rules_preset(),
       SettingSpec::number("touches", 5, "touches that win the bout (direct elimination: 15)", 1,
                           45),
       SettingSpec::number("touch_force_n", 50.0,
                           "N: the tip's contact force that registers (the seed's 50; a real "
                           "épée tip fires at 7.35)",
-                          1, 2000),
+                          1, 2000)
+          .with_official(7.35),  // FIE Material Rules: the tip's spring holds 750 g
       SettingSpec::number("double_window_s", 0.04,
                           "s: a touch by the other fencer this soon after the first is a double", 0,
                           0.2),
       SettingSpec::choice("target", "torso",
                           "pelvis, torso, spine, chest and head (the seed's), or \"whole_body\" "
                           "(épée's rule)",
-                          {"torso", "whole_body"}),
-      SettingSpec::choice("fall_penalty", "touch",
-                          "a fall gives the opponent a touch, or only halts play",
-                          {"touch", "halt"}),
+                          {"torso", "whole_body"})
+          .with_official("whole_body"),  // FIE Technical Rules: épée's target is the whole body
+      SettingSpec::choice("fall_penalty", "halt",
+                          "a fall only halts play (épée's rule), or gives the opponent a touch "
+                          "(a shaping penalty of this project's, not a rule)",
+                          {"halt", "touch"}),
       SettingSpec::number("idle_s", 60.0, "s without a touch: play halts (non-combativity)", 5,
                           600),
       SettingSpec::number("piste_length", 14.0, "m (the seed's 14)", 6, 30),

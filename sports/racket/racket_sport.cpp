@@ -31,13 +31,17 @@ std::vector<SettingSpec> RacketSport::settings() const {
       "each point's first ball: \"to_player\" at the receiver, landing deep (the seed's "
       "feed), or \"anywhere\" on the receiving half",
       {"to_player", "anywhere"});
+  // Table tennis: the seed's table, net, ball and paddle are ITTF's; "official" changes nothing.
   if (table_tennis_)
-    return {SettingSpec::number("games_to_win", 1, "games that win the match (best of 2n-1)", 1, 4),
+    return {SettingSpec::rules_preset(),
+            SettingSpec::number("games_to_win", 1, "games that win the match (best of 2n-1)", 1, 4),
             SettingSpec::number("points_per_game", 11, "points that win a game, by 2", 1, 21),
             stall, feed};
   return {
+      SettingSpec::rules_preset(),
       SettingSpec::number("net_height", 1.0,
-                          "m; the seed's 1.0 (a real net is 0.914 at the centre)", 0.5, 1.5),
+                          "m; the seed's 1.0 (a real net is 0.914 at the centre)", 0.5, 1.5)
+          .with_official(0.914),  // ITF Rules of Tennis, rule 1
       SettingSpec::choice("format", "sets", "\"tiebreak\": every set is one tie-break game",
                           {"sets", "tiebreak"}),
       SettingSpec::number("sets_to_win", 1, "sets that win the match (best of 2n-1)", 1, 3),

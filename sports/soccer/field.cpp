@@ -16,7 +16,7 @@ Eigen::Vector3d Field::goal_centre(int end) const {
 }
 
 Crossed Field::crossed(const Eigen::Vector3d& p, double r, int* end) const {
-  if (std::abs(p.x()) > half_length() + r) {
+  if (std::abs(p.x()) > goal_line_outer() + r) {
     if (end) *end = p.x() > 0 ? 1 : -1;
     const bool between_posts = std::abs(p.y()) < goal_width / 2 && p.z() < goal_height;
     return between_posts ? Crossed::Goal : Crossed::GoalLine;

@@ -1,6 +1,7 @@
 // The soccer field (SPORTS.md: the seed's 32 x 20 m, a setting), centred on the origin with its
 // length along x: goals 4 m wide and 2 m high centred on the goal lines x = -L/2 and x = +L/2,
-// posts and crossbar 12 cm thick as real collision geometry on the goal line, and a net behind
+// posts and crossbar 12 cm thick as real collision geometry on the goal line (which is as wide as
+// the posts are deep, Law 1: it runs from x = L/2 to L/2 + 12 cm), and a net behind
 // each goal (back, sides, roof) that stops the ball. Walls around the field (the original's) are
 // an option. The geometric rules live here too: what is a goal and what is out of play.
 #pragma once
@@ -27,11 +28,16 @@ struct Field {
 
   double half_length() const { return length / 2; }
   double half_width() const { return width / 2; }
+  // The goal line's far edge, |x|: Law 1 makes the goal line as wide as the posts (12 cm), and
+  // the posts stand on it from the field's edge x = L/2 back.
+  double goal_line_outer() const { return half_length() + 2 * post_radius; }
   // The centre of the goal mouth at `end` (-1: x = -L/2, +1: x = +L/2), at half its height.
   Eigen::Vector3d goal_centre(int end) const;
   // Where a ball centred at `p` (radius r) is: in play, wholly over a touch line, wholly over a
   // goal line outside the goal, or wholly over a goal line between the posts and under the bar
-  // (a goal). `end` (set when a goal line was crossed): the end whose line it crossed.
+  // (a goal). "Wholly over a goal line": over the whole of its width (Law 9 and 10), its centre
+  // more than r beyond goal_line_outer(). `end` (set when a goal line was crossed): the end whose
+  // line it crossed.
   Crossed crossed(const Eigen::Vector3d& p, double r, int* end = nullptr) const;
 
   // The goals' static boxes and capsules: posts, bar, nets; and the walls when set.

@@ -149,6 +149,9 @@ void SoccerMatch::before_physics_step() {
 }
 
 void SoccerMatch::after_physics_step(double) {
+  const Eigen::Vector3d ball = ball_->position();
+  if (!crossed_at_ && config_.field.crossed(ball, ball_->spec().radius) != Crossed::None)
+    crossed_at_ = ball;
   for (const auto& c : scene().world().sensed_contacts()) {
     const int s = c.other ? slot_of_entity(c.other->entity) : -1;
     if (s < 0) continue;
@@ -177,17 +180,19 @@ void SoccerMatch::remember_positions() {
 }
 
 void SoccerMatch::settle_tick() {
+  const Eigen::Vector3d judged = crossed_at_.value_or(ball_->position());
+  crossed_at_.reset();
   if (kind_ == SoccerMode::TeamPlay)
-    settle_team_play();
+    settle_team_play(judged);
   else
-    settle_penalty();
+    settle_penalty(judged);
   if (outcome_.match_over) outcome_.info["goals"] = goals_;
   remember_positions();
 }
 
-void SoccerMatch::settle_penalty() {
+void SoccerMatch::settle_penalty(const Eigen::Vector3d& judged) {
   int end = 0;
-  const Crossed crossed = config_.field.crossed(ball_->position(), ball_->spec().radius, &end);
+  const Crossed crossed = config_.field.crossed(judged, ball_->spec().radius, &end);
   const bool goal = crossed == Crossed::Goal && end == 1;
   set_reward(0, penalty_kick_terms(reward_state(0), spawn_, goal));
   if (kind_ == SoccerMode::PenaltyKickKeeper)
@@ -206,9 +211,9 @@ void SoccerMatch::settle_penalty() {
   if (crossed != Crossed::None) return outcome_.end("missed", keeper_wins);
 }
 
-void SoccerMatch::settle_team_play() {
+void SoccerMatch::settle_team_play(const Eigen::Vector3d& judged) {
   if (config_.stand_up) stand_up_fallen([this](int s) { return attack(s) > 0 ? 0.0 : M_PI; });
-  const auto stop = referee_.update(ball_->position(), time());
+  const auto stop = referee_.update(judged, time());
   const int scoring = stop && stop->goal ? stop->goal->team : -1;
   for (int s = 0; s < slot_count(); ++s) {
     const int goal = scoring < 0 ? 0 : (team_of(s) == scoring ? 1 : -1);

@@ -64,8 +64,9 @@ class SoccerMatch : public SmplMatch {
   void describe_scene(SceneBuilder& scene) const override;
   void extra_scene_poses(std::vector<float>& out) const override;
 
-  void settle_penalty();
-  void settle_team_play();
+  // `judged`: the ball where the rules judge it this tick (crossed_at_, else where it is now).
+  void settle_penalty(const Eigen::Vector3d& judged);
+  void settle_team_play(const Eigen::Vector3d& judged);
   void carry_out(const Stoppage& s);
   void log_stoppage(const Stoppage& s);
   // The goal and out calls, and the goal's line in the result's "goals" (scores already counted).
@@ -87,6 +88,10 @@ class SoccerMatch : public SmplMatch {
   Eigen::Vector3d spawn_ = Eigen::Vector3d::Zero();  // the ball's spot (penalty kick)
   std::vector<Eigen::Vector3d> root_before_;
   Eigen::Vector3d ball_before_ = Eigen::Vector3d::Zero();
+  // Where the ball was at the first physics step of this tick that found it wholly over a line
+  // (goals and outs are judged every step, as basketball's baskets: a ball over the line for
+  // part of a tick has crossed it).
+  std::optional<Eigen::Vector3d> crossed_at_;
   std::vector<int> touch_tick_;                     // per slot: the last tick it touched the ball
   int last_toucher_ = -1;                           // penalty: the slot that touched the ball last
   nlohmann::json goals_ = nlohmann::json::array();  // every goal, for the result

@@ -63,7 +63,7 @@ double no_dribble(const RewardState& s, const Eigen::Vector3d& spawn) {
 
 std::array<float, 7> penalty_kick_terms(const RewardState& s, const Eigen::Vector3d& spawn,
                                         bool goal) {
-  const bool closer = ball_to_goal(s) > 0;  // g > 0
+  const bool closer = ball_to_goal(s) > kBallNearingGoal;  // g > 0, past the dead band
   return {static_cast<float>(closer ? 0.0 : player_to_ball(s)),
           static_cast<float>(closer ? ball_to_goal(s) : 0.0),
           static_cast<float>(closer ? ball_velocity_to_goal(s) : 0.0),

@@ -47,6 +47,12 @@ bool entry_point(const RewardState& s, Eigen::Vector3d& entry);
 double ball_to_target(const RewardState& s);
 double no_dribble(const RewardState& s, const Eigen::Vector3d& spawn);
 
+// Eq. 11's stage switch "is the ball nearing the goal" (g > 0) has a dead band: g must exceed
+// this (m/tick, 3 mm/s) so that a ball lying still, whose position jitters by sub-micrometres
+// from tick to tick, does not flip the stage (it zeroed the player-to-ball term on 97 of 10,569
+// still ticks).
+inline constexpr double kBallNearingGoal = 1e-4;
+
 // Terms in the order of penalty_kick_rewards() / team_play_rewards().
 // `goal`: the ball went in this tick.
 std::array<float, 7> penalty_kick_terms(const RewardState& s, const Eigen::Vector3d& spawn,

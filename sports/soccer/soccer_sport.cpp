@@ -12,27 +12,35 @@ SoccerSport::SoccerSport()
               {"2v2", {0, 0, 1, 1}, "a match between two teams of two"}}) {}
 
 std::vector<SettingSpec> SoccerSport::settings() const {
+  // Official: the Laws of the Game (IFAB); the field is Law 1's for international matches.
   return {
+      SettingSpec::rules_preset(),
       SettingSpec::number("field_length", 32.0, "m, goal line to goal line (the seed's 32)", 16,
-                          110),
+                          110)
+          .with_official(105.0),
       SettingSpec::number("field_width", 20.0, "m, touch line to touch line (the seed's 20)", 10,
-                          75),
+                          75)
+          .with_official(68.0),
       SettingSpec::number("goal_width", 4.0, "m inside the posts (the seed's 4; real 7.32)", 1,
-                          7.32),
-      SettingSpec::number("goal_height", 2.0, "m under the bar (the seed's 2; real 2.44)", 1, 2.44),
+                          7.32)
+          .with_official(7.32),
+      SettingSpec::number("goal_height", 2.0, "m under the bar (the seed's 2; real 2.44)", 1, 2.44)
+          .with_official(2.44),
       SettingSpec::choice("walls", "off",
                           "walls around the field 1.5 m outside the lines (the "
                           "original's), or \"off\" (restarts keep play in)",
                           {"off", "on"}),
       SettingSpec::number("halves", 2, "halves in a match (teams change ends between)", 1, 2),
       SettingSpec::number("half_s", 120.0, "s a half lasts (the match time limit: all halves)", 5,
-                          2700),
+                          2700)
+          .with_official(2700.0),  // Law 7: two halves of 45 minutes
       SettingSpec::choice("touch_line", "throw_in",
                           "a ball over a touch line gives a throw-in, or a free kick 1 m inside",
                           {"throw_in", "free_kick"}),
       SettingSpec::number("restart_distance", 3.0,
                           "m opponents are kept from a restart until it is played (real 9.15)", 0,
-                          9.15),
+                          9.15)
+          .with_official(9.15),  // Laws 8, 13, 16, 17
       SettingSpec::number("restart_timeout_s", 10.0,
                           "s after which a restart nobody takes is in play anyway", 1, 60),
       SettingSpec::number("penalty_distance", 11.0,

@@ -7,14 +7,16 @@
 namespace olympics::testing {
 namespace {
 
-// A small field and short halves: the scripted 2v2 of seed 1 scores in the first half.
+// A small field and short halves: the scripted 2v2 of seed 5 scores (seed 1 did until issue 33
+// made the ball the Laws' size and the goal line as wide as the posts; of seeds 1-6 only 5 scores
+// now).
 const char* kOptions =
     R"({"field_length": 20, "field_width": 12, "half_s": 45, "falls": "stand_up"})";
 
 TEST(SoccerMatch, A2v2BetweenTwoAgentProcessesIsStoredWithItsGoalsAndScorers) {
   ServerFixture server;
   const std::vector<std::string> common = {"--request-id", "derby",  "--sport",  "soccer",
-                                           "--mode",       "2v2",    "--seed",   "1",
+                                           "--mode",       "2v2",    "--seed",   "5",
                                            "--options",    kOptions, "--policy", "scripted"};
   const auto r = server.two_agents(common, {"--slots", "0,1"}, {"--slots", "2,3"});
   ASSERT_FALSE(r.empty());

@@ -126,6 +126,18 @@ TEST(BasketballRules, OutOfBoundsGivesTheOtherSideTheBallAtTheArc) {
   EXPECT_TRUE(r.cleared());
 }
 
+TEST(BasketballRules, TheBallUpThroughTheRimFromBelowIsAViolationAndTheOtherSidesBall) {
+  BasketballReferee r = one_on_one();
+  r.touch(0, kInside, 1.0);  // side 0 throws it up through the ring from under the basket
+  const Stoppage s = r.from_below(1.4);
+  EXPECT_EQ(s.reason, "from_below");
+  EXPECT_FALSE(s.basket) << "no basket";
+  EXPECT_EQ(s.last_touch, 0);
+  EXPECT_EQ(s.restart.team, 1);
+  EXPECT_EQ(s.restart.kind, RestartKind::CheckBall);
+  EXPECT_EQ(r.score(), (std::array<int, 2>{0, 0}));
+}
+
 TEST(BasketballRules, ABallNobodyTouchedSinceTheRestartScoresNothing) {
   BasketballReferee r = one_on_one();
   auto s = r.update(true, false, 1.0);

@@ -3,6 +3,7 @@
 // free throw's rule that a fall after the release does not end the throw.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <random>
 
 #include "ball_aim.h"
@@ -16,9 +17,10 @@ namespace {
 
 using Eigen::Vector3d;
 
-// A seed the baseline makes (of seeds 1..100 it makes 1, 5, 7, 10, 34, 45, 52, 55, 56, 74, 85, 92
-// and 97).
-constexpr std::uint64_t kMadeSeed = 1;
+// A seed the baseline makes (of seeds 1..100 it makes 12, 16, 24, 25, 67, 77 and 92 with the
+// FIBA-calibrated ball, restitution 0.795; with the livelier 0.88 of before issue 33 it made 1, 5,
+// 7, 10, 34, 45, 52, 55, 56, 74, 85, 92 and 97).
+constexpr std::uint64_t kMadeSeed = 12;
 
 struct Throw {
   std::string reason;
@@ -69,9 +71,11 @@ TEST(ScriptedFreeThrow, CradlesThePresentedBallAndSwingsItAboveTheRim) {
     if (t.ball_from_palms_m < 0.15) ++cradled;  // the ball (r 0.12) lies between the palms
     if (t.highest_m > 3.05) ++above_rim;
   }
-  // Measured: 10 of 10 still in the hands at the swing, 6 of 10 above the rim.
+  // Measured: 10 of 10 still in the hands at the swing; 4 of 10 above the rim with the
+  // FIBA-calibrated ball (restitution 0.795: it leaves the striking hands slower), 6 of 10 with
+  // the livelier 0.88 of before issue 33.
   EXPECT_GE(cradled, 9);
-  EXPECT_GE(above_rim, 5);
+  EXPECT_GE(above_rim, 3);
 }
 
 TEST(ScriptedFreeThrow, MakesAFreeThrow) {
@@ -99,8 +103,9 @@ TEST(ScriptedFreeThrow, AimsByTheBallisticSolution) {
 }
 
 TEST(ScriptedFreeThrow, MakesFreeThrowsFromNearerLinesWhereTheSearchedSwingCannot) {
-  // Seeds 1..100 from 3.6 and 4.0 m (the line 1 and 0.6 m nearer). Measured: 8 of the 200 made
-  // by the aimed swing (4 and 4); 1 by the search's swing (2.596 rad) kept whatever the line.
+  // Seeds 1..100 from 3.6 and 4.0 m (the line 1 and 0.6 m nearer). Measured: 16 of the 200 made
+  // by the aimed swing, 4 by the search's swing (2.596 rad) kept whatever the line (with the
+  // livelier ball of before issue 33: 8 and 1).
   client::FreeThrowShot kept;
   kept.fixed_elevation = 2.596;
   int aimed = 0, fixed = 0;
@@ -109,6 +114,8 @@ TEST(ScriptedFreeThrow, MakesFreeThrowsFromNearerLinesWhereTheSearchedSwingCanno
       aimed += shoot(seed, {{"free_throw_distance", line}}).reason == "basket";
       fixed += shoot(seed, {{"free_throw_distance", line}}, kept).reason == "basket";
     }
+  std::printf("from 3.6 and 4.0 m, seeds 1..100: aimed %d made, the search's swing kept %d\n",
+              aimed, fixed);
   EXPECT_GE(aimed, 5);
   EXPECT_GE(aimed, fixed + 4);
 }

@@ -27,15 +27,20 @@ struct Drop {
     court.full = full_court;
     court.build(scene.world());
   }
-  // Steps `seconds`; the first step at which the ball went down through the rim, or -1.
-  int run(double seconds, double* max_x_speed = nullptr) {
+  // Steps `seconds`; the first step at which the ball made a basket (BasketWatch: down through
+  // the rim, not after coming up through it), or -1. `from_below`: the first step at which it
+  // went up through the rim.
+  int run(double seconds, double* max_x_speed = nullptr, int* from_below = nullptr) {
     const int steps = static_cast<int>(seconds / scene.settings().physics_dt());
     int basket = -1;
+    BasketWatch watch(court);
     for (int i = 0; i < steps; ++i) {
       const Vector3d before = ball.position();
       ball.prepare_step(scene.settings().physics_dt());
       scene.physics_step();
-      if (basket < 0 && court.basket_through(before, ball.position()) >= 0) basket = i;
+      const RimPassage passage = watch.step(before, ball.position());
+      if (basket < 0 && passage.basket >= 0) basket = i;
+      if (from_below && *from_below < 0 && passage.from_below >= 0) *from_below = i;
       if (max_x_speed) *max_x_speed = std::max(*max_x_speed, std::abs(ball.velocity().x()));
     }
     return basket;
@@ -48,13 +53,25 @@ TEST(BasketballCourt, ABallDroppedThroughTheRimIsABasket) {
   EXPECT_LT(d.ball.position().z(), 2.0) << "it fell through the ring";
 }
 
-TEST(BasketballCourt, ABallThroughTheRimFromBelowIsNoBasketOnTheWayUp) {
-  // Thrown straight up through the ring: rises 1.3 m above it, so nothing counts for 0.5 s.
+TEST(BasketballCourt, ABallThroughTheRimFromBelowIsNoBasketUpOrBackDown) {
+  // Thrown straight up through the ring at 7 m/s from 2.6 m: it rises 1.3 m above it and falls
+  // back down through it at about 1.3 s. Followed until it is well below the ring (1.6 s):
+  // no basket (FIBA art. 16: a violation), called on the way up. (Before BasketWatch the fall
+  // back counted.)
   Drop d({0, 0, 2.6}, {0, 0, 7.0});
-  const int basket = d.run(0.6);
+  int from_below = -1;
+  const int basket = d.run(1.6, nullptr, &from_below);
   EXPECT_EQ(basket, -1);
+  EXPECT_GE(from_below, 0) << "went up through the ring";
+  EXPECT_LT(d.ball.position().z(), 2.0) << "followed until it came back down through the ring";
+  EXPECT_EQ(d.court.basket_from_below({0, 0, 3.0}, {0, 0, 3.1}), 0);
   EXPECT_EQ(d.court.basket_through({0, 0, 3.0}, {0, 0, 3.1}), -1);
   EXPECT_EQ(d.court.basket_through({0, 0, 3.1}, {0, 0, 3.0}), 0);
+  // After it has come back down below the rim, a ball from above counts again.
+  BasketWatch watch(d.court);
+  EXPECT_EQ(watch.step({0, 0, 3.0}, {0, 0, 3.1}).from_below, 0);
+  EXPECT_EQ(watch.step({0, 0, 3.1}, {0, 0, 3.0}).basket, -1) << "the same ball falling back";
+  EXPECT_EQ(watch.step({0, 0, 3.1}, {0, 0, 3.0}).basket, 0) << "a new shot from above";
 }
 
 TEST(BasketballCourt, ABallOnTheFrontOfTheRimBouncesOffItAndIsNoBasket) {
@@ -170,6 +187,22 @@ TEST(BasketballFreeThrow, AShotThroughTheRimEndsTheThrowWithABasket) {
   EXPECT_TRUE(called);
 }
 
+TEST(BasketballFreeThrow, ABallUpThroughTheRimFromBelowIsAMissNotABasket) {
+  auto m = free_throw(3, {{"present_s", 0}});
+  auto& b = dynamic_cast<BasketballMatch&>(*m);
+  b.ball().set_state({0, 0, 2.6}, {0, 0, 7.0});     // under the rim, straight up through it
+  const nlohmann::json events = play_zero(*m, 90);  // 3 s: up, and back down through the ring
+  ASSERT_TRUE(m->outcome().match_over);
+  EXPECT_EQ(m->outcome().reason, "missed");
+  EXPECT_EQ(m->outcome().scores[0], 0.0f);
+  bool from_below = false;
+  for (const auto& e : events) {
+    EXPECT_NE(e["call"], "basket");
+    from_below |= e["call"] == "miss" && e["where"] == "from_below";
+  }
+  EXPECT_TRUE(from_below);
+}
+
 TEST(BasketballFreeThrow, AShortShotIsAMissOnTheFloor) {
   auto m = free_throw(3, {{"present_s", 0}});
   auto& b = dynamic_cast<BasketballMatch&>(*m);
@@ -274,8 +307,13 @@ Grip hold(double squeeze_deg, double hold_s, Stance stance = Stance::Fixed,
 }
 
 TEST(BasketballGrip, PressedPalmsAndClosedFingersHoldTheBallThreeSecondsAndOpenHandsLetGo) {
+  // The ball settles once between the palms and stays: 5.8 cm from their midpoint with the
+  // FIBA-calibrated restitution 0.795 (2.8 cm with the too lively 0.88 before), the same 5.8 cm
+  // when held 8 s instead of 3; its radius is 12 cm.
   const Grip g = hold(5, 3.0);
-  EXPECT_LT(g.max_slip, 0.05) << "the ball stayed between the palms";
+  std::printf("fixed pelvis, ball's largest distance from the palms' midpoint: %.4f m\n",
+              g.max_slip);
+  EXPECT_LT(g.max_slip, 0.07) << "the ball stayed between the palms";
   EXPECT_GT(g.after_release, 0.3) << "opening the hands let it fall";
 }
 

@@ -47,16 +47,36 @@ TEST(BoxingReferee, AKnockDownCostsAPointAndBeatingTheCountResumes) {
   run(r, 2.1, 6, {false, true});  // boxer 1 down for 4 s
   EXPECT_TRUE(r.counting(1));
   EXPECT_NEAR(r.down_for(1, 6), 3.9, 0.05);
-  run(r, 6.1, 6.8);  // up, but not for a whole second yet
+  run(r, 6.1, 10.0);  // up from 6.1 s, but the count of eight runs to 10.1 s
   EXPECT_TRUE(r.counting(1));
-  run(r, 6.9, 7.2);
-  EXPECT_FALSE(r.counting(1)) << "up for a second: the count is beaten";
+  run(r, 10.05, 10.2);
+  EXPECT_FALSE(r.counting(1)) << "up, and counted to eight: the count is beaten";
   EXPECT_EQ(r.knockdowns()[1], 1);
   run(r, 7.3, 30.1);
   ASSERT_TRUE(r.over());
   EXPECT_EQ(r.cards()[0], (std::array<int, 2>{10, 8})) << "9 for fewer punches, -1 knock-down";
   EXPECT_EQ(r.reason(), "decision");
   EXPECT_EQ(r.winner(), 0);
+}
+
+TEST(BoxingReferee, AKnockedDownBoxerIsCountedToEightEvenIfUpAtOnce) {
+  BoxingRules rules;
+  rules.rounds = 1, rules.round_s = 60;
+  BoxingReferee r(rules);
+  run(r, 0, 1);
+  run(r, 1.0, 1.2, {true, false});  // down for a moment at 1 s
+  run(r, 1.25, 8.9);                // up at once, and stays up
+  EXPECT_TRUE(r.counting(0)) << "the mandatory eight count runs to 9 s";
+  run(r, 8.95, 9.1);
+  EXPECT_FALSE(r.counting(0)) << "counted to eight, up: the count is beaten";
+  EXPECT_FALSE(r.over());
+  // The count can be set off (0): then up for up_s beats it.
+  rules.mandatory_count_s = 0;
+  BoxingReferee quick(rules);
+  run(quick, 0, 1);
+  run(quick, 1.0, 1.2, {true, false});
+  run(quick, 1.25, 2.4);
+  EXPECT_FALSE(quick.counting(0));
 }
 
 TEST(BoxingReferee, StillDownWhenTheCountEndsIsAKnockOut) {

@@ -130,6 +130,7 @@ TEST(BoxingBout, RoundsEndWithCardsAndStartInTheCorners) {
     if (e["call"] == "punch") {
       ++punches;
       EXPECT_TRUE(kTargets.count(e["body"])) << e.dump();
+      EXPECT_NE(e["body"], "Pelvis") << "below the belt: " << e.dump();
       EXPECT_GE(e["force_n"].get<double>(), 100.0) << e.dump();
     }
     if (e["call"] == "round_end") {
@@ -155,6 +156,46 @@ TEST(BoxingBout, RoundsEndWithCardsAndStartInTheCorners) {
   }
   std::printf("%s after %d punches, cards %g-%g\n", o.reason.c_str(), punches, o.scores[0],
               o.scores[1]);
+}
+
+// Boxer 1 (facing -x) thrown at 3 m/s onto boxer 0's still right glove (the arms of the rest
+// pose are out to the sides), the given body of boxer 1 level with the glove and 0.2 m in front
+// of it; the punches scored in the next ticks, by body.
+std::vector<std::string> punched_by_throwing_onto_the_glove(const std::string& body) {
+  auto m = sport_or_throw("boxing").create({"1v1", 1, 0.0, {}});
+  auto& bout = dynamic_cast<boxing::BoxingMatch&>(*m);
+  const core::Humanoid& defender = std::as_const(bout).scene().humanoid(1);
+  const Eigen::Vector3d glove = bout.glove_position(0, 1);
+  const Eigen::Vector3d target = defender.body_state(defender.spec().body_index(body)).position;
+  const Eigen::Vector3d shift = glove + Eigen::Vector3d(0.2, 0, 0) - target;
+  for (int b = 0; b < defender.body_count(); ++b) {
+    dBodyID id = defender.ode_body(b);
+    const dReal* p = dBodyGetPosition(id);
+    dBodySetPosition(id, p[0] + shift.x(), p[1] + shift.y(), p[2] + shift.z());
+    dBodySetLinearVel(id, -3, 0, 0);
+  }
+  std::vector<std::string> punched;
+  const std::vector<float> zero(m->action_size(), 0.0f);
+  for (int tick = 0; tick < 4; ++tick) {
+    m->step({zero, zero});
+    for (const auto& e : m->outcome().info["events"])
+      if (e["call"] == "punch") punched.push_back(e["body"]);
+  }
+  return punched;
+}
+
+TEST(BoxingRules, APunchBelowTheBeltDoesNotScore) {
+  // The same throw scores on the chest and not on the pelvis.
+  const auto chest = punched_by_throwing_onto_the_glove("Chest");
+  EXPECT_NE(std::find(chest.begin(), chest.end(), "Chest"), chest.end()) << "the set-up punches";
+  const auto pelvis = punched_by_throwing_onto_the_glove("Pelvis");
+  EXPECT_EQ(std::find(pelvis.begin(), pelvis.end(), "Pelvis"), pelvis.end())
+      << "a punch on the pelvis scored";
+  EXPECT_FALSE(boxing::scores_punch_on("Pelvis")) << "below the belt";
+  for (const char* body : {"Torso", "Spine", "Chest", "Head"})
+    EXPECT_TRUE(boxing::scores_punch_on(body)) << body;
+  EXPECT_FALSE(boxing::scores_punch_on("L_Thigh"));
+  EXPECT_FALSE(boxing::scores_punch_on("R_Hand"));
 }
 
 TEST(BoxingRules, APunchFromBehindDoesNotScore) {

@@ -11,20 +11,25 @@
 namespace olympics::sports::soccer {
 namespace {
 
-constexpr double kR = 0.115;  // the ball's radius
+constexpr double kR = 0.110;  // the ball's radius (Law 2: 68-70 cm round)
 
-TEST(SoccerField, AGoalIsTheWholeBallOverTheLineBetweenThePostsAndUnderTheBar) {
-  Field f;  // goal lines at x = +-16, goal 4 m wide, 2 m high
+TEST(SoccerField, AGoalIsTheWholeBallOverTheWholeLineBetweenThePostsAndUnderTheBar) {
+  Field f;  // goal lines from x = +-16 to +-16.12 (as deep as the posts), goal 4 m by 2 m
   int end = 0;
+  const double line = 16.0 + 2 * f.post_radius;  // the goal line's far edge
+  EXPECT_EQ(f.goal_line_outer(), line);
   EXPECT_EQ(f.crossed({16.0, 0, 0.5}, kR), Crossed::None) << "centre on the line";
-  EXPECT_EQ(f.crossed({16.0 + kR, 0, 0.5}, kR), Crossed::None) << "touching the line";
-  EXPECT_EQ(f.crossed({16.0 + kR + 1e-6, 0, 0.5}, kR, &end), Crossed::Goal);
+  EXPECT_EQ(f.crossed({16.0 + kR + 0.05, 0, 0.5}, kR), Crossed::None)
+      << "past the field's edge but not past the whole line (the posts' depth): no goal yet";
+  EXPECT_EQ(f.crossed({line + kR, 0, 0.5}, kR), Crossed::None) << "touching the line's far edge";
+  EXPECT_EQ(f.crossed({line + kR + 1e-6, 0, 0.5}, kR, &end), Crossed::Goal);
   EXPECT_EQ(end, 1);
-  EXPECT_EQ(f.crossed({-16.2, 1.9, 1.9}, kR, &end), Crossed::Goal);
+  EXPECT_EQ(f.crossed({-16.3, 1.9, 1.9}, kR, &end), Crossed::Goal);
   EXPECT_EQ(end, -1);
   // Wide of a post (centre outside the posts' inner edge) or over the bar: out, no goal.
-  EXPECT_EQ(f.crossed({16.2, 2.01, 0.5}, kR), Crossed::GoalLine);
-  EXPECT_EQ(f.crossed({16.2, 0, 2.05}, kR), Crossed::GoalLine);
+  EXPECT_EQ(f.crossed({16.3, 2.01, 0.5}, kR), Crossed::GoalLine);
+  EXPECT_EQ(f.crossed({16.3, 0, 2.05}, kR), Crossed::GoalLine);
+  EXPECT_EQ(f.crossed({16.2, 3.0, 0.1}, kR), Crossed::None) << "wide, not over the whole line";
   EXPECT_EQ(f.crossed({3, 10.0 + kR, 0.1}, kR), Crossed::None) << "on the touch line";
   EXPECT_EQ(f.crossed({3, -10.2, 0.1}, kR), Crossed::TouchLine);
 }
@@ -218,6 +223,25 @@ TEST(SoccerRewards, ThePenaltyKickIsStagedByWhetherTheBallNearsTheGoal) {
   EXPECT_EQ(terms[3].weight, 0.8);
   EXPECT_EQ(terms[4].weight, -1.0);
   EXPECT_EQ(terms[5].weight, 0.0);
+}
+
+TEST(SoccerRewards, AStillBallsJitterDoesNotSwitchTheStage) {
+  // A ball lying still moves by sub-micrometres from tick to tick; towards the goal, that is
+  // g > 0 by a hair. The stage must stay "go to the ball".
+  RewardState jitter = state();
+  jitter.ball_before = jitter.ball;
+  jitter.ball.x() += 3e-7;  // 0.3 micrometre towards the goal
+  jitter.ball_velocity = {1e-5, 0, 0};
+  ASSERT_GT(ball_to_goal(jitter), 0.0);
+  const auto t = penalty_kick_terms(jitter, {5, 0, kR}, false);
+  EXPECT_FLOAT_EQ(t[0], static_cast<float>(player_to_ball(jitter))) << "player_to_ball on";
+  EXPECT_NE(t[0], 0.0f);
+  EXPECT_EQ(t[1], 0.0f);
+  EXPECT_EQ(t[3], 0.0f);
+  // A ball rolling towards the goal at 1 cm/s is past the dead band: the kick stage.
+  RewardState rolling = jitter;
+  rolling.ball.x() = rolling.ball_before.x() + 0.01 / 30;
+  EXPECT_EQ(penalty_kick_terms(rolling, {5, 0, kR}, false)[0], 0.0f);
 }
 
 TEST(SoccerRewards, TeamPlayPaysTheGoalToOneSideAndChargesTheOther) {
