@@ -47,11 +47,11 @@ const nlohmann::json& events(const sports::SportMatch& m) {
 }
 
 nlohmann::json ball_return(const std::string& sport, const std::string& policy, int balls,
-                           const std::string& named_seeds) {
+                           int episodes_asked, const std::string& named_seeds) {
   SeedList seeds(named_seeds);
   int episodes = 0, fed = 0, touched = 0, returns_in = 0, falls = 0;
   double seconds = 0;
-  while (fed < balls) {
+  while (episodes_asked > 0 ? episodes < episodes_asked : fed < balls) {
     bool touched_this_ball = false;
     const auto match = play_in_process(sport, {"ball_return", seeds.next(), 60.0, {}}, {policy},
                                        [&](const sports::SportMatch& m) {
@@ -133,7 +133,7 @@ nlohmann::json run_racket_bench(const RacketBenchOptions& o) {
   for (const std::string& sport : o.sports) {
     nlohmann::json& r = report["sports"][sport];
     for (const std::string& policy : o.policies)
-      r["ball_return"][policy] = ball_return(sport, policy, o.balls, o.seeds);
+      r["ball_return"][policy] = ball_return(sport, policy, o.balls, o.episodes, o.seeds);
     if (o.matches > 0) r["1v1"] = singles(sport, o.matches, o.seeds);
     if (!o.speed) continue;
     core::ModelSpec players = core::load_humanoid(core::HumanoidKind::Smpl);

@@ -20,6 +20,7 @@ namespace olympics::bench {
 
 struct RacketBenchOptions {
   int balls = 1000;    // ball return: episodes are played until this many balls were fed
+  int episodes = 0;    // ...or exactly this many episodes, when it is set
   int matches = 20;    // 1v1 matches per sport (0: none)
   std::string seeds;   // first seeds, e.g. "100001-200000" (docs/figures.md); empty: from 100001
   double seconds = 2;  // wall seconds per speed measurement

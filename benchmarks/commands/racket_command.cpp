@@ -1,4 +1,5 @@
-// olympics-bench racket [--json] [--balls N] [--matches M] [--seeds A-B,..] [--policies P,..]
+// olympics-bench racket [--json] [--balls N | --episodes N] [--matches M] [--seeds A-B,..]
+// [--policies P,..]
 //                       [--sports S,..] [--seconds S] [--repeats R] [--no-speed]
 #include "bench_command.h"
 #include "racket_bench.h"
@@ -12,6 +13,8 @@ BenchCommand racket_command(CLI::App& app) {
   auto o = std::make_shared<RacketBenchOptions>();
   auto& cli = c.cli();
   cli.add_option("--balls", o->balls, "ball return: balls fed per sport and policy")
+      ->check(CLI::PositiveNumber);
+  cli.add_option("--episodes", o->episodes, "ball return: this many episodes instead of --balls")
       ->check(CLI::PositiveNumber);
   cli.add_option("--matches", o->matches, "scripted 1v1 matches per sport (0: none)")
       ->check(CLI::NonNegativeNumber);
