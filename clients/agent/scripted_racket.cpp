@@ -293,7 +293,8 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
     was_coming_ = team_coming;
     coming = coming && my_ball(court, partner, ball);
   }
-  if (coming && stroke_ && stroke_->time_to_hit - control_dt_ < play.commit_s) {
+  if (coming && stroke_ && stroke_->reachable &&
+      stroke_->time_to_hit - control_dt_ < play.commit_s) {
     // Committed: the swing is under way; the ball is met where it was planned.
     stroke_->time_to_hit -= control_dt_;
     if (stroke_->time_to_hit < -play.commit_s) stroke_.reset();
