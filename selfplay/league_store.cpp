@@ -36,7 +36,7 @@ std::string entrants_json(const TournamentSpec& t) {
 // Every step is committed before it is taken, and must survive even a power loss.
 LeagueStore::LeagueStore(const std::string& location)
     : db_(sql::open_sql_database(location, sql::Durability::PowerLoss)) {
-  db_->script(kSchema);
+  db_->create_schema(kSchema);
   sql::add_column_if_missing(*db_, "tournaments", "sport_options", kSportOptionsColumn);
 }
 

@@ -40,7 +40,7 @@ StoredParticipant participant_from_row(const TextRow& p) {
 // match (against power loss) cost the stepping threads ~5% of their throughput.
 ResultsStore::ResultsStore(const std::string& location)
     : db_(sql::open_sql_database(location, sql::Durability::ProcessCrash)) {
-  db_->script(kResultsSchema);
+  db_->create_schema(kResultsSchema);
   for (const auto& [column, definition] : kResultsAddedColumns)
     sql::add_column_if_missing(*db_, "matches", column, definition);
 }

@@ -108,9 +108,16 @@ class PostgresDatabase : public SqlDatabase {
       throw std::runtime_error(shown_ + ": " + PQerrorMessage(conn_));
   }
 
+  // One transaction (PQexec runs a multi-statement string as one) holding an advisory lock that
+  // every schema maker of this project takes first, so makers run one after another.
+  void create_schema(const std::string& sql) override {
+    script("SELECT pg_advisory_xact_lock(" + std::to_string(kSchemaLock) + ");\n" + sql);
+  }
+
   std::string describe() const override { return shown_; }
 
  private:
+  static constexpr long long kSchemaLock = 0x4f4c594d50494353;  // "OLYMPICS"
   std::string shown_;
   PGconn* conn_;
 };

@@ -19,6 +19,9 @@ class SqlDatabase {
                                  const std::vector<std::string>& params = {}) = 0;
   // Several statements without parameters (a schema).
   virtual void script(const std::string& sql) = 0;
+  // A schema of CREATE ... IF NOT EXISTS statements, safe when several processes make it at once
+  // (PostgreSQL's IF NOT EXISTS is not: two racing creators fail on a duplicate type key).
+  virtual void create_schema(const std::string& sql) { script(sql); }
   // Runs `work` in one transaction: committed if it returns, rolled back (and rethrown) if it
   // throws.
   void transaction(const std::function<void()>& work);
