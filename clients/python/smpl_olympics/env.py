@@ -17,8 +17,13 @@ from . import catalog
 from ._client import MatchClient
 from .spaces import box
 
+try:  # PettingZoo's base class when it is installed, so isinstance(env, ParallelEnv) holds
+    from pettingzoo.utils.env import ParallelEnv as _ParallelEnvBase
+except ImportError:  # nothing beyond numpy is required: the same surface without it
+    _ParallelEnvBase = object
 
-class OlympicsParallelEnv:
+
+class OlympicsParallelEnv(_ParallelEnvBase):
     metadata = {"name": "smpl_olympics", "render_modes": [], "is_parallelizable": True}
     render_mode = None
 
@@ -65,6 +70,11 @@ class OlympicsParallelEnv:
                 self.obs_fields[(b["name"], f["name"])] = slice(at + f["offset"],
                                                                 at + f["offset"] + f["size"])
             at += b["size"]
+
+    @property
+    def unwrapped(self):
+        """This env itself: it wraps nothing (PettingZoo's wrappers and tests ask for it)."""
+        return self
 
     @property
     def num_agents(self):
@@ -148,11 +158,15 @@ class OlympicsParallelEnv:
                 rows[i] = np.asarray(actions[agent], dtype=np.float32).reshape(size)
         self._client.act(self._tick, rows)
         batch = self._client.next(self.timeout_s)
-        if batch is None:  # the match ended without a final observation reaching us
+        if batch is None:  # the match ended without a final observation reaching us:
+            # every live agent still gets its entries (its last observation, no reward), as
+            # PettingZoo asks of a step.
             self.result = self._client.wait_result(self.timeout_s)
-            ended = {a: True for a in self.agents}
+            ended = list(self.agents)
             self.agents = []
-            return {}, {}, ended, {a: False for a in ended}, {}
+            return ({a: self._last_obs[a] for a in ended}, {a: 0.0 for a in ended},
+                    {a: True for a in ended}, {a: False for a in ended},
+                    {a: {"result": self.result} for a in ended})
         observations, rewards, terminations, truncations, infos = self._unpack(batch, self.agents)
         self.agents = [a for a in self.agents if not (terminations[a] or truncations[a])]
         if not self.agents:
