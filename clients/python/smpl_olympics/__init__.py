@@ -10,6 +10,8 @@
 """
 from ._client import MatchClient, MatchError
 from .env import OlympicsParallelEnv
+from .servers import CapacityError, NoServerError
 from .vector_env import OlympicsVectorEnv
 
-__all__ = ["MatchClient", "MatchError", "OlympicsParallelEnv", "OlympicsVectorEnv"]
+__all__ = ["CapacityError", "MatchClient", "MatchError", "NoServerError", "OlympicsParallelEnv",
+           "OlympicsVectorEnv"]

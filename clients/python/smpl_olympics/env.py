@@ -15,6 +15,7 @@ import numpy as np
 
 from . import catalog
 from ._client import MatchClient
+from .servers import CONNECT_TIMEOUT_S, find_servers
 from .spaces import box
 
 try:  # PettingZoo's base class when it is installed, so isinstance(env, ParallelEnv) holds
@@ -30,7 +31,7 @@ class OlympicsParallelEnv(_ParallelEnvBase):
     def __init__(self, sport="sandbox", mode="1v1", slots=None, match_id=None, request_id=None,
                  time_limit_s=0.0, realtime=False, lcm_url="", agent_name="python",
                  policy_id="", policy_version="", server_id="", timeout_s=60.0, learner=None,
-                 sport_options=None, secret_file=""):
+                 sport_options=None, secret_file="", connect_timeout_s=CONNECT_TIMEOUT_S):
         self.sport, self.mode = sport, mode
         self.slots = None if slots is None else sorted(slots)
         self.match_id, self.request_id = match_id, request_id
@@ -42,6 +43,11 @@ class OlympicsParallelEnv(_ParallelEnvBase):
         self.assignment = None
         # The deployment's secret file ("" = $OLYMPICS_SECRET_FILE, or none): docs/security.md.
         self._client = MatchClient(lcm_url, agent_name, policy_id, policy_version, secret_file)
+        # The first reset first listens this long for the server's announcement, and raises
+        # NoServerError (naming the URL and how to start one) rather than wait timeout_s.
+        self._connect = dict(lcm_url=lcm_url, secret_file=secret_file, server_id=server_id,
+                             timeout_s=connect_timeout_s)
+        self._server_seen = False
         self._episode = itertools.count()
         self._tick = None
         self.description = None
@@ -117,6 +123,9 @@ class OlympicsParallelEnv(_ParallelEnvBase):
         """
         if seed is None:
             seed = int(np.random.SeedSequence().entropy % (1 << 62))
+        if not self._server_seen:
+            find_servers(**self._connect)
+            self._server_seen = True
         match_id, slots = self.match_id, self.slots
         if self.learner is not None:
             self.assignment = self._client.wait_assignment(self.learner, max(self.timeout_s, 600.0))

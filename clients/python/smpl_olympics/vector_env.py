@@ -20,6 +20,7 @@ import numpy as np
 
 from . import catalog
 from ._client import VectorClient
+from .servers import CONNECT_TIMEOUT_S, check_capacity, find_servers
 from .spaces import box
 
 
@@ -27,7 +28,8 @@ class OlympicsVectorEnv:
     def __init__(self, num_envs, sport="sandbox", mode="1v1", slots=None, seed=None,
                  time_limit_s=0.0, sport_options=None, realtime=False, server_id="",
                  request_prefix="", lcm_url="", agent_name="python", policy_id="",
-                 policy_version="", secret_file="", timeout_s=60.0, drop_rate=0.0, learner=""):
+                 policy_version="", secret_file="", timeout_s=60.0, drop_rate=0.0, learner="",
+                 connect_timeout_s=CONNECT_TIMEOUT_S):
         self.num_envs, self.sport, self.mode = int(num_envs), sport, mode
         spec = catalog.mode(sport, mode)
         if learner:  # the league says which slots, match by match: one team's worth
@@ -56,6 +58,20 @@ class OlympicsVectorEnv:
             learner=learner)
         self.seed = _fresh_seed() if seed is None else int(seed)
         self._client = None
+        # The first reset (or start) listens this long for the servers' announcements: none
+        # raises NoServerError; fewer matches admitted than num_envs raises CapacityError.
+        self._connect = dict(lcm_url=lcm_url, secret_file=secret_file, server_id=server_id,
+                             timeout_s=connect_timeout_s)
+        self._servers_checked = False
+
+    def _check_servers(self):
+        if self._servers_checked:
+            return
+        if self._settings["learner"]:  # the league requests the matches: only a server is needed
+            find_servers(**self._connect)
+        else:
+            check_capacity(self.num_envs, **self._connect)
+        self._servers_checked = True
 
     def reset(self, seed=None, options=None):
         """Starts num_envs new matches; returns (observations [envs, agents, obs], infos).
@@ -65,6 +81,7 @@ class OlympicsVectorEnv:
             self.seed = int(seed)
         elif self._client is not None:
             self.seed = _fresh_seed()
+        self._check_servers()
         self._client = VectorClient(seed=self.seed, **self._settings)
         batch = self._client.reset()
         return batch["obs"], {"match_ids": [self._client.match_id(e) for e in range(self.num_envs)]}
@@ -73,6 +90,7 @@ class OlympicsVectorEnv:
         """Async: starts every environment's first match without waiting; recv() returns each
         as it begins (a league's live learner gets its matches one by one)."""
         self.seed = int(seed) if seed is not None else self.seed
+        self._check_servers()
         self._client = VectorClient(seed=self.seed, **self._settings)
         self._client.start()
 
