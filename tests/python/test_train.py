@@ -410,6 +410,18 @@ def _cmdline(pid):
         return ""
 
 
+class RunsAreNotCommitted(unittest.TestCase):
+    def test_the_default_run_folder_is_ignored_by_git(self):
+        repo = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+        if not os.path.isdir(os.path.join(repo, ".git")) and not os.path.isfile(
+                os.path.join(repo, ".git")):
+            self.skipTest("not a git checkout")
+        run = train.parse_args([]).run
+        for made in (os.path.join(run, "snapshots", "000001.npz"), os.path.join(run, "metrics.jsonl")):
+            checked = subprocess.run(["git", "check-ignore", "-q", made], cwd=repo)
+            self.assertEqual(checked.returncode, 0, f"{made} is not ignored by git")
+
+
 URL = f"udpm://239.255.76.67:{25000 + os.getpid() % 9000}?ttl=0&recv_buf_size=4194304"
 
 if __name__ == "__main__":
