@@ -15,3 +15,12 @@ from .vector_env import OlympicsVectorEnv
 
 __all__ = ["CapacityError", "MatchClient", "MatchError", "NoServerError", "OlympicsParallelEnv",
            "OlympicsVectorEnv"]
+
+try:  # the one-slot modes as Gymnasium envs, for gymnasium.make("smpl_olympics/...-v0")
+    import gymnasium  # noqa: F401
+except ImportError:  # gymnasium is optional: nothing beyond numpy is required
+    pass
+else:
+    from .gym_env import OlympicsGymEnv, register_all
+    register_all()
+    __all__.append("OlympicsGymEnv")
