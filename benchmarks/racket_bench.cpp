@@ -5,72 +5,136 @@
 
 #include "bench_support.h"
 #include "core/humanoid_assets.h"
-#include "core/humanoid_scene.h"
-#include "policies.h"
 #include "racket/racket_equipment.h"
-#include "racket/racket_match.h"
 #include "registry.h"
 
 namespace olympics::bench {
 namespace {
 
-struct EpisodeStats {
-  int episodes = 0, balls = 0, touched = 0, first_ball_touched = 0, returns_in = 0, falls = 0;
-  long ticks = 0;
+constexpr std::uint64_t kFirstUnseenSeed = 100001;    // tuning used ball-return seeds 1-200
+constexpr double kSmplOlympicsHitsPerEpisode = 1.83;  // its best table-tennis method (the paper)
+
+// Seeds to draw from, in order: the named ones, or kFirstUnseenSeed on.
+class SeedList {
+ public:
+  explicit SeedList(const std::string& named) {
+    if (!named.empty()) seeds_ = episode_seeds(named, 0);
+  }
+  std::uint64_t next() { return seeds_.empty() ? kFirstUnseenSeed + used_++ : seeds_.at(used_++); }
+  std::string used() const {
+    if (used_ == 0) return "none";
+    const std::uint64_t first = seeds_.empty() ? kFirstUnseenSeed : seeds_.front();
+    const std::uint64_t last = seeds_.empty() ? kFirstUnseenSeed + used_ - 1 : seeds_[used_ - 1];
+    return std::to_string(first) + "-" + std::to_string(last) +
+           (seeds_.empty() ? "" : " (of the named list)");
+  }
+
+ private:
+  std::vector<std::uint64_t> seeds_;
+  size_t used_ = 0;
 };
 
-// Plays ball-return episodes with a policy; counts balls launched, balls touched, returns in.
-EpisodeStats ball_return(const std::string& sport, const std::string& policy_name, int episodes) {
-  const auto& s = sports::sport_or_throw(sport);
-  EpisodeStats st;
-  for (int e = 0; e < episodes; ++e) {
-    auto match = s.create({"ball_return", static_cast<std::uint64_t>(e + 1), 60.0, {}});
-    auto* racket = dynamic_cast<sports::racket::RacketMatch*>(match.get());
-    auto policy = client::make_policy(policy_name, e + 1);
-    policy->start(in_process_match_info(sport, "ball_return", *match));
-    std::vector<float> obs(match->obs_size()), act(match->action_size());
-    int touches_this_ball = 0, balls = 1, touched = 0;
-    bool first_touched = false;
-    while (!match->outcome().match_over) {
-      match->observe(0, obs);
-      policy->act(obs, act);
-      match->step({std::span<const float>(act)});
-      for (const auto& ev : match->outcome().info.value("events", nlohmann::json::array())) {
-        const std::string call = ev.value("call", "");
-        if (call == "hit" && touches_this_ball++ == 0) {
-          ++touched;
-          if (balls == 1) first_touched = true;
-        }
-        if (call == "return_in") ++balls, touches_this_ball = 0;
-        if (call == "fall") ++st.falls;
-      }
-    }
-    st.episodes++;
-    st.balls += balls;
-    st.touched += touched;
-    st.first_ball_touched += first_touched;
-    st.returns_in += racket->returns_in(0);
-    st.ticks += match->tick();
+nlohmann::json rate(int hits, int n) {
+  const auto ci = wilson_95(hits, n);
+  return {{"count", hits}, {"of", n}, {"rate", n ? double(hits) / n : 0.0}, {"ci95", ci}};
+}
+
+// The referee's calls of this tick.
+const nlohmann::json& events(const sports::SportMatch& m) {
+  static const nlohmann::json none = nlohmann::json::array();
+  const auto& info = m.outcome().info;
+  return info.contains("events") ? info["events"] : none;
+}
+
+nlohmann::json ball_return(const std::string& sport, const std::string& policy, int balls,
+                           const std::string& named_seeds) {
+  SeedList seeds(named_seeds);
+  int episodes = 0, fed = 0, touched = 0, returns_in = 0, falls = 0;
+  double seconds = 0;
+  while (fed < balls) {
+    bool touched_this_ball = false;
+    const auto match = play_in_process(sport, {"ball_return", seeds.next(), 60.0, {}}, {policy},
+                                       [&](const sports::SportMatch& m) {
+                                         for (const auto& ev : events(m)) {
+                                           const std::string call = ev.value("call", "");
+                                           if (call == "hit" && !touched_this_ball)
+                                             touched_this_ball = true, ++touched;
+                                           if (call == "return_in")
+                                             ++returns_in, ++fed, touched_this_ball = false;
+                                           if (call == "point") ++fed;
+                                           if (call == "fall") ++falls;
+                                         }
+                                       });
+    ++episodes;
+    seconds += match->tick() * match->control_dt();
   }
-  return st;
+  return {{"episodes", episodes},
+          {"seeds", seeds.used()},
+          {"balls", fed},
+          {"returns_in", rate(returns_in, fed)},
+          {"touched", rate(touched, fed)},
+          {"returns_in_per_episode", double(returns_in) / episodes},
+          {"smplolympics_hits_per_episode", kSmplOlympicsHitsPerEpisode},
+          {"falls", falls},
+          {"falls_per_minute", falls / (seconds / 60)},
+          {"seconds_played", seconds}};
+}
+
+// Scripted against scripted in the sport's standard short format.
+nlohmann::json singles(const std::string& sport, int matches, const std::string& named_seeds) {
+  const nlohmann::json format = sport == "table_tennis"
+                                    ? nlohmann::json{{"games_to_win", 2}, {"points_per_game", 11}}
+                                    : nlohmann::json{{"format", "sets"}, {"sets_to_win", 1}};
+  SeedList seeds(named_seeds);
+  std::vector<double> strokes;
+  int by_score = 0, falls = 0, strokes_now = 0;
+  double seconds = 0;
+  for (int i = 0; i < matches; ++i) {
+    const auto match = play_in_process(sport, {"1v1", seeds.next(), 0.0, format},
+                                       {"scripted", "scripted"}, [&](const sports::SportMatch& m) {
+                                         for (const auto& ev : events(m)) {
+                                           const std::string call = ev.value("call", "");
+                                           if (call == "hit") ++strokes_now;
+                                           if (call == "fall") ++falls;
+                                           if (call == "point")
+                                             strokes.push_back(strokes_now), strokes_now = 0;
+                                         }
+                                       });
+    by_score += match->outcome().reason != "time_limit";
+    seconds += match->tick() * match->control_dt();
+  }
+  std::sort(strokes.begin(), strokes.end());
+  auto quantile = [&](double q) {
+    return strokes.empty() ? 0.0
+                           : strokes[std::min(strokes.size() - 1, size_t(q * strokes.size()))];
+  };
+  double mean = 0;
+  for (double s : strokes) mean += s;
+  return {{"matches", matches},
+          {"seeds", seeds.used()},
+          {"format", format},
+          {"ended_by_score", rate(by_score, matches)},
+          {"points", strokes.size()},
+          {"strokes_per_point",
+           {{"mean", strokes.empty() ? 0 : mean / strokes.size()},
+            {"median", quantile(0.5)},
+            {"p90", quantile(0.9)},
+            {"longest", strokes.empty() ? 0.0 : strokes.back()}}},
+          {"falls", falls},
+          {"falls_per_minute", falls / (seconds / 60)},
+          {"seconds_played", seconds}};
 }
 
 }  // namespace
 
 nlohmann::json run_racket_bench(const RacketBenchOptions& o) {
-  nlohmann::json report = {{"episodes", o.episodes}, {"sports", nlohmann::json::object()}};
+  nlohmann::json report = {{"tuning_seeds", "ball return 1-200"},
+                           {"sports", nlohmann::json::object()}};
   for (const std::string& sport : o.sports) {
     nlohmann::json& r = report["sports"][sport];
-    for (const std::string& policy : o.policies) {
-      const EpisodeStats st = ball_return(sport, policy, o.episodes);
-      r["ball_return"][policy] = {{"episodes", st.episodes},
-                                  {"balls", st.balls},
-                                  {"balls_touched", st.touched},
-                                  {"first_ball_touched", st.first_ball_touched},
-                                  {"returns_in", st.returns_in},
-                                  {"falls", st.falls},
-                                  {"touch_fraction", double(st.touched) / st.balls}};
-    }
+    for (const std::string& policy : o.policies)
+      r["ball_return"][policy] = ball_return(sport, policy, o.balls, o.seeds);
+    if (o.matches > 0) r["1v1"] = singles(sport, o.matches, o.seeds);
     if (!o.speed) continue;
     core::ModelSpec players = core::load_humanoid(core::HumanoidKind::Smpl);
     sports::equipment::attach_equipment(players, sport == "tennis"
@@ -81,16 +145,47 @@ nlohmann::json run_racket_bench(const RacketBenchOptions& o) {
   return report;
 }
 
+namespace {
+std::string percent(const nlohmann::json& r) {
+  char s[96];
+  std::snprintf(s, sizeof s, "%d of %d (%.1f%%, 95%% %.1f-%.1f%%)", r["count"].get<int>(),
+                r["of"].get<int>(), 100 * r["rate"].get<double>(), 100 * r["ci95"][0].get<double>(),
+                100 * r["ci95"][1].get<double>());
+  return s;
+}
+}  // namespace
+
 void print_racket_report(const nlohmann::json& report) {
+  std::printf("(seeds unseen by tuning; tuning used %s)\n",
+              report["tuning_seeds"].get<std::string>().c_str());
   for (const auto& [sport, r] : report["sports"].items()) {
     std::printf("%s\n", sport.c_str());
-    for (const auto& [policy, b] : r["ball_return"].items())
+    for (const auto& [policy, b] : r["ball_return"].items()) {
+      std::printf("  ball_return %-8s %d episodes (seeds %s): %d balls fed\n", policy.c_str(),
+                  b["episodes"].get<int>(), b["seeds"].get<std::string>().c_str(),
+                  b["balls"].get<int>());
+      std::printf("    returns in %s; touched %s\n", percent(b["returns_in"]).c_str(),
+                  percent(b["touched"]).c_str());
       std::printf(
-          "  ball_return %-8s %d episodes: %d balls, %d touched (%.1f%%), first ball touched in "
-          "%d, %d returns in, %d falls\n",
-          policy.c_str(), b["episodes"].get<int>(), b["balls"].get<int>(),
-          b["balls_touched"].get<int>(), 100 * b["touch_fraction"].get<double>(),
-          b["first_ball_touched"].get<int>(), b["returns_in"].get<int>(), b["falls"].get<int>());
+          "    returns in per episode %.2f (SMPLOlympics' best: %.2f hits); %d falls, "
+          "%.2f per minute\n",
+          b["returns_in_per_episode"].get<double>(),
+          b["smplolympics_hits_per_episode"].get<double>(), b["falls"].get<int>(),
+          b["falls_per_minute"].get<double>());
+    }
+    if (r.contains("1v1")) {
+      const auto& s = r["1v1"];
+      const auto& k = s["strokes_per_point"];
+      std::printf("  1v1 scripted x scripted, %d matches %s (seeds %s): ended by score %s\n",
+                  s["matches"].get<int>(), s["format"].dump().c_str(),
+                  s["seeds"].get<std::string>().c_str(), percent(s["ended_by_score"]).c_str());
+      std::printf(
+          "    %d points; strokes per point mean %.2f, median %.0f, p90 %.0f, longest %.0f; "
+          "%d falls, %.2f per minute\n",
+          s["points"].get<int>(), k["mean"].get<double>(), k["median"].get<double>(),
+          k["p90"].get<double>(), k["longest"].get<double>(), s["falls"].get<int>(),
+          s["falls_per_minute"].get<double>());
+    }
     if (!r.contains("speed_1v1")) continue;
     const auto& s = r["speed_1v1"];
     std::printf("  1v1 ticks/s on one core: match %.0f, bare physics %.0f, ratio %.2f\n",

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # The main job: a real table-tennis match between two agent processes over LCM. Starts an
 # olympics-server, plays a best-of-three match of games to 6 points (by 2) between two scripted
-# players, prints the referee's calls and the result, stores it, writes the replay and its scene
-# track, prints the results table and the command to watch the match, and stops the server.
-# OLYMPICS_DEMO_SPORT and OLYMPICS_DEMO_OPTIONS play another sport (e.g. tennis with
-# '{"format":"tiebreak"}'; the scripted players seldom return a ball, so points alternate with
-# the serve and a tennis tie-break rarely ends before the time limit).
+# players, prints the referee's calls (each point with its strokes: the rallies) and the result,
+# stores it, writes the replay and its scene track, prints the results table and the command to
+# watch the match, and stops the server. OLYMPICS_DEMO_SPORT and OLYMPICS_DEMO_OPTIONS play another
+# sport (e.g. tennis with '{"format":"tiebreak"}'; the scripted tennis players seldom reach a
+# ball, so a tennis tie-break can run to the time limit: docs/racket-sports.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/bin

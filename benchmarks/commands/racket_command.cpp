@@ -1,4 +1,5 @@
-// olympics-bench racket [--json] [--episodes N] [--seconds S] [--repeats R]
+// olympics-bench racket [--json] [--balls N] [--matches M] [--seeds A-B,..] [--policies P,..]
+//                       [--sports S,..] [--seconds S] [--repeats R] [--no-speed]
 #include "bench_command.h"
 #include "racket_bench.h"
 
@@ -6,18 +7,22 @@ namespace olympics::bench {
 
 BenchCommand racket_command(CLI::App& app) {
   BenchCommand c(app, "racket",
-                 "tennis / table tennis: scripted touch rate, match ticks/s vs bare physics");
+                 "tennis / table tennis: scripted returns and rallies, match ticks/s vs bare "
+                 "physics");
   auto o = std::make_shared<RacketBenchOptions>();
   auto& cli = c.cli();
-  cli.add_option("--episodes", o->episodes, "ball-return episodes per sport and policy")
+  cli.add_option("--balls", o->balls, "ball return: balls fed per sport and policy")
       ->check(CLI::PositiveNumber);
-  cli.add_option("--seconds", o->seconds, "wall seconds per speed measurement")
-      ->check(CLI::PositiveNumber);
+  cli.add_option("--matches", o->matches, "scripted 1v1 matches per sport (0: none)")
+      ->check(CLI::NonNegativeNumber);
+  add_seeds_option(cli, o->seeds, "episode and match (default: 100001 on, unseen by tuning)");
   cli.add_option("--policies", o->policies,
                  "ball-return players: scripted, zero, random, mlp:FILE (comma-separated)")
       ->delimiter(',');
   cli.add_option("--sports", o->sports, "tennis, table_tennis (comma-separated)")->delimiter(',');
   cli.add_flag("--no-speed{false}", o->speed, "skip the 1v1 ticks/s measurement");
+  cli.add_option("--seconds", o->seconds, "wall seconds per speed measurement")
+      ->check(CLI::PositiveNumber);
   cli.add_option("--repeats", o->repeats, "interleaved repeats (median reported)")
       ->check(CLI::PositiveNumber);
   c.measure = [o] { return run_racket_bench(*o); };

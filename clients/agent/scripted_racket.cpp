@@ -41,11 +41,12 @@ struct Play {
   // Gravity compensation, in multiples of the weight (control/drive_target.h: 3 holds a still
   // arm; a swinging one met more balls with less).
   double gravity_scale = 2;
-  double commit_s = 0.2;         // this close to the ball, the stroke is no longer re-planned
-  double settle_s = 0.5;         // the legs stop walking this long before a reachable ball
-  double walk_speed = 0.6;       // m/s the legs cover, roughly, toward a ball out of reach
-  double balance_ahead = -0.03;  // the centre of mass held this far ahead of the ankles
-  double horizon_s = 0;          // how far ahead the ball is predicted
+  double commit_s = 0.2;           // this close to the ball, the stroke is no longer re-planned
+  double settle_s = 0.5;           // the legs stop walking this long before a reachable ball
+  double doubles_step_back = 0.7;  // m further back than home while the partner plays
+  double walk_speed = 0.6;         // m/s the legs cover, roughly, toward a ball out of reach
+  double balance_ahead = -0.03;    // the centre of mass held this far ahead of the ankles
+  double horizon_s = 0;            // how far ahead the ball is predicted
   StepGains legs;
 };
 
@@ -123,6 +124,10 @@ void ScriptedRacketPolicy::start(const MatchInfo& match) {
     sport_ = std::make_unique<Sport>(table ? sports::racket::table_tennis_game()
                                            : sports::racket::tennis_game(1.0));
   control_dt_ = match.control_dt;
+  others_ = l.has("others") ? l.offset("others") : -1;
+  doubles_ = match.mode == "2v2";
+  struck_this_turn_ = was_coming_ = false;
+  my_turn_ = -1;
   legs_.reset();
   stroke_.reset();
   since_stroke_s_ = 1e9;
@@ -243,6 +248,16 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
   set_joint(a, kLShoulder, 0, -1.2);
 }
 
+bool ScriptedRacketPolicy::my_ball(const CourtFrame& court, const Eigen::Vector3d& partner,
+                                   const Eigen::Vector3d& ball) {
+  // A new point (the ball put back at the feed): nobody's turn yet.
+  if ((ball - last_ball_).norm() > 1.0) my_turn_ = -1, struck_this_turn_ = false;
+  last_ball_ = ball;
+  const bool nearer = (ball - court.root).head<2>().norm() <= (ball - partner).head<2>().norm();
+  if (!sport_->game.on_table) return nearer;  // tennis: either partner; the nearer one plays
+  return my_turn_ < 0 ? nearer : my_turn_ == 1;
+}
+
 void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
   if (control_dt_ <= 0 || !sport_)
     throw std::logic_error("ScriptedRacketPolicy: act() before start()");
@@ -259,7 +274,25 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
   const BodyPose pose = sport_->model.pose_from_observation(o);
   root_velocity_ = smpl::root_velocity(o);
 
-  const bool coming = o[at.rally + 1] > 0.5 && o[at.rally] < 0.5;  // to me, not struck yet
+  // Doubles: the partner is the other player on this side of the net.
+  Eigen::Vector3d partner = court.root;
+  if (doubles_)
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d p = court.point(vec3(o, others_ + 3 * k));
+      if (p.x() < 0) partner = p;
+    }
+  const Eigen::Vector3d ball = court.point(vec3(o, at.ball));
+  const bool team_coming = o[at.rally + 1] > 0.5;
+  bool coming = team_coming && o[at.rally] < 0.5;  // to me, not struck yet
+  if (doubles_) {
+    // Table tennis: partners strike in turn. When the ball leaves the team, whoever did not
+    // strike this time strikes next time.
+    if (o[at.rally] > 0.5) struck_this_turn_ = true;
+    if (was_coming_ && !team_coming)
+      my_turn_ = struck_this_turn_ ? 0 : 1, struck_this_turn_ = false;
+    was_coming_ = team_coming;
+    coming = coming && my_ball(court, partner, ball);
+  }
   if (coming && stroke_ && stroke_->time_to_hit - control_dt_ < play.commit_s) {
     // Committed: the swing is under way; the ball is met where it was planned.
     stroke_->time_to_hit -= control_dt_;
@@ -277,7 +310,12 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
   if (stroke_ && (!stroke_->reachable || stroke_->time_to_hit > play.settle_s)) {
     walk = stroke_->stance - court.root;
   } else if (!coming && since_stroke_s_ > 0.4) {
-    walk = Eigen::Vector3d(play.home_x, 0, 0) - court.root;
+    // Home: the middle of the own half's back, or in doubles the own side of it.
+    const double home_y =
+        doubles_ ? (court.root.y() >= partner.y() ? 1 : -1) * sport_->game.partner_y : 0;
+    // In doubles the partner whose ball it is not steps back out of the striker's way.
+    const double back = doubles_ && team_coming ? play.doubles_step_back : 0;
+    walk = Eigen::Vector3d(play.home_x - back, home_y, 0) - court.root;
   }
   walk.z() = 0;
   legs_->balance_centre_of_mass(sport_->model.centre_of_mass(pose), play.balance_ahead);

@@ -60,7 +60,18 @@ class ScriptedRacketPolicy : public Policy {
   void drive_arm(const control::CourtFrame& court, const control::BodyPose& pose,
                  std::span<float> a);
 
+  // Doubles: is it this player's ball (its side of the court in tennis, its turn at the table)?
+  bool my_ball(const control::CourtFrame& court, const Eigen::Vector3d& partner,
+               const Eigen::Vector3d& ball);
+
   Blocks blocks_;
+  int others_ = -1;  // the "others" block (doubles and singles), -1 in ball return
+  bool doubles_ = false;
+  // Table-tennis doubles' turn: did this player strike while the ball was its team's, and is it
+  // its turn (unknown at a point's first stroke: the player nearer the ball takes it).
+  bool struck_this_turn_ = false, was_coming_ = false;
+  int my_turn_ = -1;  // 1 yes, 0 no, -1 unknown
+  Eigen::Vector3d last_ball_ = Eigen::Vector3d::Zero();
   std::unique_ptr<Sport> sport_;
   double control_dt_ = 0;
   std::optional<StepController> legs_;

@@ -7,7 +7,9 @@ pybind11-dev); the lcm-gen'd message types (`import olympics`) and the sports ca
 is needed with `pip install --no-build-isolation ./clients/python`.
 
 The catalog needs a built olympics-server: $OLYMPICS_SERVER, else olympics-server on PATH, else
-build/bin/olympics-server of this repository (bash deploy/build.sh).
+build/bin/olympics-server of this repository (bash deploy/build.sh). The scripted players link the
+build's sports libraries ($OLYMPICS_BUILD_DIR, else build/ of this repository) and ODE, tinyxml2
+and xxHash (Debian: libode-dev libtinyxml2-dev libxxhash-dev).
 """
 import glob
 import os
@@ -51,6 +53,17 @@ def olympics_server():
              "(bash deploy/build.sh) or set OLYMPICS_SERVER")
 
 
+def sports_libraries():
+    build = os.environ.get("OLYMPICS_BUILD_DIR", os.path.join(ROOT, "build"))
+    found = [os.path.join(build, "sports", "libolympics_sports.a"),
+             os.path.join(build, "sports", "core", "libolympics_core.a")]
+    missing = [f for f in found if not os.path.exists(f)]
+    if missing:
+        sys.exit(f"{missing[0]} not found: build the project first (bash deploy/build.sh) or set "
+                 "OLYMPICS_BUILD_DIR to its build folder")
+    return found
+
+
 class BuildExt(build_ext):
     """lcm-gen's C++ headers and the wire schema first, then the extension."""
 
@@ -86,6 +99,8 @@ sources = ([os.path.join(HERE, f) for f in ("bindings.cpp", "vector_bindings.cpp
            sorted(f for f in glob.glob(os.path.join(ROOT, "clients", "agent", "*.cpp"))
                   if os.path.basename(f) not in ("main.cpp", "snapshot_tool.cpp",
                                                  "play_match.cpp", "call_log.cpp")) +
+           # the scripted players' control toolkit (docs/control.md)
+           sorted(glob.glob(os.path.join(ROOT, "clients", "agent", "control", "*.cpp"))) +
            sorted(glob.glob(os.path.join(ROOT, "protocol", "*.cpp"))))
 extension = Extension(
     "smpl_olympics._client",
@@ -93,11 +108,13 @@ extension = Extension(
     # sports/core: self_observation_layout.h alone (header-only), which the policies read by
     include_dirs=[os.path.join(ROOT, d) for d in ("lcmtypes", "protocol", "clients/cpp",
                                                   "clients/agent", "clients/python",
-                                                  "sports/core")] +
+                                                  "sports/core", "sports")] +
                  [pybind11_include(), "/usr/include/eigen3"],
     extra_compile_args=["-std=c++20", "-O2", "-fvisibility=hidden",
                         *[f for f in cflags if not f.startswith("-I")]],
-    extra_link_args=libs + ["-lcrypto"],
+    # The control toolkit models the player's body and ball with the server's own code: linked
+    # from the CMake build's static libraries (position-independent), not compiled again.
+    extra_link_args=sports_libraries() + libs + ["-lcrypto", "-lode", "-ltinyxml2", "-lxxhash"],
     language="c++",
 )
 extension.include_dirs += [f[2:] for f in cflags if f.startswith("-I")]

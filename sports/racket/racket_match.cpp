@@ -70,16 +70,18 @@ std::vector<RewardTerm> racket_rewards() {
 }
 
 std::vector<RefereeCall> racket_calls() {
-  return {{"hit", "a racket struck the ball"},
-          {"bounce", "the ball bounced on the playing surface (x, y)"},
-          {"floor", "the ball hit the floor off the table (table tennis; x, y)"},
-          {"net", "the ball touched the net"},
-          {"dead_ball", "the ball stopped: it counts as bouncing again where it lies"},
-          {"body_touch", "the ball touched a player's body"},
-          {"point", "a point is decided: winner_team, reason, culprit_slot", kAnnounced},
-          {"fall", "a player fell (body): that side loses the point"},
-          {"let", "both sides fell at once: the point is played again", kAnnounced},
-          {"return_in", "ball return: the return landed in; the next ball comes"}};
+  return {
+      {"hit", "a racket struck the ball"},
+      {"bounce", "the ball bounced on the playing surface (x, y)"},
+      {"floor", "the ball hit the floor off the table (table tennis; x, y)"},
+      {"net", "the ball touched the net"},
+      {"dead_ball", "the ball stopped: it counts as bouncing again where it lies"},
+      {"body_touch", "the ball touched a player's body"},
+      {"point", "a point is decided: winner_team, reason, culprit_slot, strokes (by both sides)",
+       kAnnounced},
+      {"fall", "a player fell (body): that side loses the point"},
+      {"let", "both sides fell at once: the point is played again", kAnnounced},
+      {"return_in", "ball return: the return landed in; the next ball comes"}};
 }
 
 RacketMatch::RacketMatch(const RacketMatchConfig& config, const ModeSpec& mode, Layout layout,
@@ -267,11 +269,9 @@ void RacketMatch::settle_tick() {
     start_point();
   }
   if (const auto& call = referee_.call()) {
-    nlohmann::json point = {{"n", points_.size() + 1},
-                            {"winner_team", call->winner_team},
-                            {"reason", call->reason},
-                            {"culprit_slot", call->culprit_slot},
-                            {"tick", tick()}};
+    nlohmann::json point = {{"n", points_.size() + 1},       {"winner_team", call->winner_team},
+                            {"reason", call->reason},        {"culprit_slot", call->culprit_slot},
+                            {"strokes", referee_.strokes()}, {"tick", tick()}};
     if (ball_return) {
       points_.push_back(point);
       outcome_.info = {{"points", points_}, {"returns_in", hits_[0]}};

@@ -24,6 +24,7 @@ void RallyReferee::start_point(int receiving_team, int first_hitter, double time
   run_surface_ = -1;
   run_last_ = -1;
   call_.reset();
+  strokes_ = 0;
   events_ = nlohmann::json::array();
 }
 
@@ -39,7 +40,8 @@ void RallyReferee::lose(int team, int culprit, const std::string& reason) {
   const bool two_teams = std::find(teams_.begin(), teams_.end(), 1) != teams_.end();
   const int winner = two_teams ? 1 - team : -1;
   call_ = PointCall{winner, team, culprit, reason};
-  nlohmann::json e = {{"call", "point"}, {"winner_team", winner}, {"reason", reason}};
+  nlohmann::json e = {
+      {"call", "point"}, {"winner_team", winner}, {"reason", reason}, {"strokes", strokes_}};
   if (culprit >= 0) e["culprit_slot"] = culprit;
   events_.push_back(std::move(e));
 }
@@ -53,6 +55,7 @@ void RallyReferee::racket_hit(int slot, double time) {
     return;
   }
   event("hit", time, slot);
+  ++strokes_;
   if (team == striker_) return lose(team, slot, "double_hit");
   if (game_.on_table && bounces_ == 0) return lose(team, slot, "volley");
   if (alternate_ && next_hitter_[team] >= 0 && next_hitter_[team] != slot)

@@ -56,6 +56,7 @@ class RallyReferee {
   int striker_team() const { return striker_; }
   int receiver_team() const { return 1 - striker_; }
   int last_hitter() const { return last_hitter_; }  // -1: none this crossing (the feed)
+  int strokes() const { return strokes_; }          // this point's strokes so far, both sides
   int bounces() const { return bounces_; }          // on the receiver's side since the last stroke
   bool netted() const { return netted_; }
   // The referee's calls so far this point (hit, bounce, net, ...), for the match's info.
@@ -77,6 +78,7 @@ class RallyReferee {
   int last_hitter_ = -1;
   double last_hit_time_ = -1;
   int bounces_ = 0;
+  int strokes_ = 0;  // this point's strokes, both sides (the point call reports them)
   bool netted_ = false;
   std::vector<int> next_hitter_;  // per team, when partners alternate (-1: either)
   StallTimer stall_;              // since the point began or the last stroke
