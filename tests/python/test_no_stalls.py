@@ -3,6 +3,7 @@ matches than the server admits raises at once with both numbers and the setting 
 an env with no server on its LCM URL raises within seconds, naming the URL and how to start one
 (they used to wait: FULL answers retried in silence, 60 s of nothing)."""
 import os
+import signal
 import tempfile
 import time
 import unittest
@@ -60,6 +61,23 @@ class NoStalls(unittest.TestCase):
         obs, *_ = env.step(np.zeros((3, 2, env.action_size), np.float32))
         self.assertEqual(obs.shape[0], 3)
         env.close()
+
+    def test_a_vector_env_whose_server_stops_answering_says_to_check_the_server(self):
+        self.serve("paused", capacity=2)
+        env = OlympicsVectorEnv(1, sport="sandbox", mode="1v1", seed=1, lcm_url=self.url,
+                                timeout_s=2.0, connect_timeout_s=CONNECT_S)
+        env.reset()
+        self.servers[0].send_signal(signal.SIGSTOP)  # alive, but silent
+        try:
+            with self.assertRaises(MatchError) as caught:
+                for _ in range(1000):
+                    env.step(np.zeros((1, 2, env.action_size), np.float32))
+        finally:
+            self.servers[0].send_signal(signal.SIGCONT)
+        message = str(caught.exception)
+        self.assertTrue(message.startswith("TIMEOUT:"), message)
+        self.assertIn(f"olympics-server on {self.url}", message)
+        self.assertIn("olympics-server serve --lcm-url", message)
 
     def test_vector_env_without_a_server_names_the_url_and_how_to_start_one(self):
         env = OlympicsVectorEnv(2, sport="sandbox", mode="1v1", lcm_url=self.nobody,

@@ -61,3 +61,12 @@ def check_capacity(num_matches, lcm_url="", secret_file="", server_id="",
             f"{num_matches - max(free, 0)} of this env's {num_matches} matches wait until others "
             "end", RuntimeWarning, stacklevel=3)
     return servers
+
+
+def with_server_hint(error, lcm_url):
+    """A client's TIMEOUT error, with what to check: the server on the URL (or its load)."""
+    if not str(error).startswith("TIMEOUT:"):
+        return error
+    url = lcm_url or DEFAULT_LCM_URL
+    return MatchError(f"{error} (is the olympics-server on {url} still running, and not stopped or "
+                      f"overloaded? `build/bin/olympics-server serve --lcm-url '{url}'` starts one)")

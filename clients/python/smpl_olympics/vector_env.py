@@ -19,8 +19,8 @@ import json
 import numpy as np
 
 from . import catalog
-from ._client import VectorClient
-from .servers import CONNECT_TIMEOUT_S, check_capacity, find_servers
+from ._client import MatchError, VectorClient
+from .servers import CONNECT_TIMEOUT_S, check_capacity, find_servers, with_server_hint
 from .spaces import box
 
 
@@ -83,7 +83,7 @@ class OlympicsVectorEnv:
             self.seed = _fresh_seed()
         self._check_servers()
         self._client = VectorClient(seed=self.seed, **self._settings)
-        batch = self._client.reset()
+        batch = self._waiting(self._client.reset)
         return batch["obs"], {"match_ids": [self._client.match_id(e) for e in range(self.num_envs)]}
 
     def start(self, seed=None):
@@ -97,7 +97,7 @@ class OlympicsVectorEnv:
     def step(self, actions):
         """actions [num_envs, num_agents, action_size] -> observations, rewards, terminations,
         truncations, infos (reward_terms, episode_over, final_observation, tick)."""
-        batch = self._client.step(self._actions(actions, self.num_envs))
+        batch = self._waiting(self._client.step, self._actions(actions, self.num_envs))
         return self._unpack(batch)[1:]
 
     def send(self, actions, env_ids=None):
@@ -110,7 +110,7 @@ class OlympicsVectorEnv:
         """Async: the environments whose next observation has come (at least min_ready, or
         whatever came within timeout_s when given): (env_ids, observations, rewards,
         terminations, truncations, infos), rows in env_ids order."""
-        return self._unpack(self._client.recv(int(min_ready), timeout_s))
+        return self._unpack(self._waiting(self._client.recv, int(min_ready), timeout_s))
 
     def match_id(self, env):
         """The id of the match environment `env` plays now (its result carries it)."""
@@ -122,6 +122,16 @@ class OlympicsVectorEnv:
 
     def close(self):
         self._client = None
+
+    def _waiting(self, call, *args):
+        """call(*args), its TIMEOUT saying what to check: the server."""
+        try:
+            return call(*args)
+        except MatchError as error:
+            hinted = with_server_hint(error, self._settings["lcm_url"])
+            if hinted is error:
+                raise
+            raise hinted from error
 
     def _actions(self, actions, n):
         actions = np.ascontiguousarray(actions, dtype=np.float32)
