@@ -13,7 +13,10 @@ constraints=$(mktemp)
 trap 'rm -f "$constraints"' EXIT
 "$python" -c 'import numpy; print("numpy==" + numpy.__version__)' > "$constraints"
 echo "Python test packages for $python ($("$python" --version 2>&1)):"
-"$python" -m pip install --user --break-system-packages --quiet --disable-pip-version-check \
+# Into a virtualenv's own site packages when PYTHON is one's; else the user's.
+where=(--user --break-system-packages)
+if "$python" -c 'import sys; sys.exit(sys.prefix == sys.base_prefix)'; then where=(); fi
+"$python" -m pip install "${where[@]}" --quiet --disable-pip-version-check \
   -r "$repo/clients/python/test-requirements.txt" -c "$constraints"
 "$python" -c 'import pettingzoo, gymnasium, numpy
 print("pettingzoo", pettingzoo.__version__, "gymnasium", gymnasium.__version__, "numpy", numpy.__version__)'
