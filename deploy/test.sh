@@ -5,6 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash deploy/install-debian-deps.sh --tests
 bash deploy/build.sh
+bash deploy/install-python-test-deps.sh
 bash deploy/multicast-route.sh
 OLYMPICS_TEST_POSTGRES_URL=$(bash deploy/start-test-postgres.sh | tail -1)
 export OLYMPICS_TEST_POSTGRES_URL

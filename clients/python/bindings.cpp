@@ -100,6 +100,7 @@ PYBIND11_MODULE(_client, m) {
   py::register_exception<MatchError>(m, "MatchError", PyExc_RuntimeError);
   olympics::python::bind_vector_client(m);
   olympics::python::bind_native_policy(m);
+  olympics::python::bind_server_listener(m);
 
   py::class_<MatchClient>(m, "MatchClient")
       .def(py::init([](const std::string& lcm_url, const std::string& agent_name,

@@ -19,5 +19,7 @@ olympics::client::ClientOptions client_options(const std::string& lcm_url,
 void bind_vector_client(pybind11::module_& m);
 // smpl_olympics._client.NativePolicy (policy_bindings.cpp).
 void bind_native_policy(pybind11::module_& m);
+// smpl_olympics._client.listen_for_servers and DEFAULT_LCM_URL (server_bindings.cpp).
+void bind_server_listener(pybind11::module_& m);
 
 }  // namespace olympics::python

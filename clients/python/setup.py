@@ -92,7 +92,7 @@ class BuildPy(build_py):
 cflags = pkg_config("--cflags")
 libs = pkg_config("--libs")
 sources = ([os.path.join(HERE, f) for f in ("bindings.cpp", "vector_bindings.cpp",
-                                           "policy_bindings.cpp")] +
+                                           "policy_bindings.cpp", "server_bindings.cpp")] +
            sorted(glob.glob(os.path.join(ROOT, "clients", "cpp", "*.cpp"))) +
            # the policies olympics-agent plays (NativePolicy), without its programs' mains and
            # the agent's --calls log (which reads the sports registry)

@@ -1,5 +1,6 @@
-"""PettingZoo's parallel API rules, checked by hand (pettingzoo is not installable here) against
-real matches on a real olympics-server: what parallel_api_test asserts, written out."""
+"""PettingZoo's parallel API rules, checked by hand against real matches on a real olympics-server:
+finer than PettingZoo's own parallel_api_test (which test_pettingzoo.py runs for every mode),
+e.g. agents dropping out before the match's end, and the spaces' bounds."""
 import os
 import tempfile
 import unittest

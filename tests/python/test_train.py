@@ -5,6 +5,7 @@ leaves its checkpoint, snapshots, metrics and curves, and its snapshot plays a m
 import json
 import os
 import subprocess
+import sys
 import tempfile
 import time
 import unittest
@@ -408,6 +409,33 @@ def _cmdline(pid):
             return f.read().decode(errors="replace")
     except OSError:  # it ended meanwhile
         return ""
+
+
+class TrainerSaysWhichPython(unittest.TestCase):
+    def test_a_python_without_torch_gets_which_python_and_what_to_do(self):
+        shadow = tempfile.mkdtemp(prefix="olympics-notorch-")
+        os.makedirs(os.path.join(shadow, "torch"))
+        with open(os.path.join(shadow, "torch", "__init__.py"), "w") as f:
+            f.write("raise ImportError('no torch in this test')\n")
+        env = dict(os.environ, PYTHONPATH=f"{shadow}:{os.environ.get('PYTHONPATH', '')}")
+        done = subprocess.run([sys.executable, "-m", "smpl_olympics.train", "--samples", "1"],
+                              env=env, capture_output=True, text=True, timeout=120)
+        self.assertNotEqual(done.returncode, 0)
+        self.assertIn(f"the trainer runs in {sys.executable}", done.stderr)
+        self.assertIn("python3-torch", done.stderr)
+        self.assertNotIn("Traceback", done.stderr)
+
+
+class RunsAreNotCommitted(unittest.TestCase):
+    def test_the_default_run_folder_is_ignored_by_git(self):
+        repo = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+        if not os.path.isdir(os.path.join(repo, ".git")) and not os.path.isfile(
+                os.path.join(repo, ".git")):
+            self.skipTest("not a git checkout")
+        run = train.parse_args([]).run
+        for made in (os.path.join(run, "snapshots", "000001.npz"), os.path.join(run, "metrics.jsonl")):
+            checked = subprocess.run(["git", "check-ignore", "-q", made], cwd=repo)
+            self.assertEqual(checked.returncode, 0, f"{made} is not ignored by git")
 
 
 URL = f"udpm://239.255.76.67:{25000 + os.getpid() % 9000}?ttl=0&recv_buf_size=4194304"

@@ -10,6 +10,17 @@
 """
 from ._client import MatchClient, MatchError
 from .env import OlympicsParallelEnv
+from .servers import CapacityError, NoServerError
 from .vector_env import OlympicsVectorEnv
 
-__all__ = ["MatchClient", "MatchError", "OlympicsParallelEnv", "OlympicsVectorEnv"]
+__all__ = ["CapacityError", "MatchClient", "MatchError", "NoServerError", "OlympicsParallelEnv",
+           "OlympicsVectorEnv"]
+
+try:  # the one-slot modes as Gymnasium envs, for gymnasium.make("smpl_olympics/...-v0")
+    import gymnasium  # noqa: F401
+except ImportError:  # gymnasium is optional: nothing beyond numpy is required
+    pass
+else:
+    from .gym_env import OlympicsGymEnv, register_all
+    register_all()
+    __all__.append("OlympicsGymEnv")

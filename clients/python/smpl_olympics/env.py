@@ -15,17 +15,23 @@ import numpy as np
 
 from . import catalog
 from ._client import MatchClient
+from .servers import CONNECT_TIMEOUT_S, find_servers
 from .spaces import box
 
+try:  # PettingZoo's base class when it is installed, so isinstance(env, ParallelEnv) holds
+    from pettingzoo.utils.env import ParallelEnv as _ParallelEnvBase
+except ImportError:  # nothing beyond numpy is required: the same surface without it
+    _ParallelEnvBase = object
 
-class OlympicsParallelEnv:
+
+class OlympicsParallelEnv(_ParallelEnvBase):
     metadata = {"name": "smpl_olympics", "render_modes": [], "is_parallelizable": True}
     render_mode = None
 
     def __init__(self, sport="sandbox", mode="1v1", slots=None, match_id=None, request_id=None,
                  time_limit_s=0.0, realtime=False, lcm_url="", agent_name="python",
                  policy_id="", policy_version="", server_id="", timeout_s=60.0, learner=None,
-                 sport_options=None, secret_file=""):
+                 sport_options=None, secret_file="", connect_timeout_s=CONNECT_TIMEOUT_S):
         self.sport, self.mode = sport, mode
         self.slots = None if slots is None else sorted(slots)
         self.match_id, self.request_id = match_id, request_id
@@ -37,6 +43,11 @@ class OlympicsParallelEnv:
         self.assignment = None
         # The deployment's secret file ("" = $OLYMPICS_SECRET_FILE, or none): docs/security.md.
         self._client = MatchClient(lcm_url, agent_name, policy_id, policy_version, secret_file)
+        # The first reset first listens this long for the server's announcement, and raises
+        # NoServerError (naming the URL and how to start one) rather than wait timeout_s.
+        self._connect = dict(lcm_url=lcm_url, secret_file=secret_file, server_id=server_id,
+                             timeout_s=connect_timeout_s)
+        self._server_seen = False
         self._episode = itertools.count()
         self._tick = None
         self.description = None
@@ -65,6 +76,11 @@ class OlympicsParallelEnv:
                 self.obs_fields[(b["name"], f["name"])] = slice(at + f["offset"],
                                                                 at + f["offset"] + f["size"])
             at += b["size"]
+
+    @property
+    def unwrapped(self):
+        """This env itself: it wraps nothing (PettingZoo's wrappers and tests ask for it)."""
+        return self
 
     @property
     def num_agents(self):
@@ -107,6 +123,9 @@ class OlympicsParallelEnv:
         """
         if seed is None:
             seed = int(np.random.SeedSequence().entropy % (1 << 62))
+        if not self._server_seen:
+            find_servers(**self._connect)
+            self._server_seen = True
         match_id, slots = self.match_id, self.slots
         if self.learner is not None:
             self.assignment = self._client.wait_assignment(self.learner, max(self.timeout_s, 600.0))
@@ -148,11 +167,15 @@ class OlympicsParallelEnv:
                 rows[i] = np.asarray(actions[agent], dtype=np.float32).reshape(size)
         self._client.act(self._tick, rows)
         batch = self._client.next(self.timeout_s)
-        if batch is None:  # the match ended without a final observation reaching us
+        if batch is None:  # the match ended without a final observation reaching us:
+            # every live agent still gets its entries (its last observation, no reward), as
+            # PettingZoo asks of a step.
             self.result = self._client.wait_result(self.timeout_s)
-            ended = {a: True for a in self.agents}
+            ended = list(self.agents)
             self.agents = []
-            return {}, {}, ended, {a: False for a in ended}, {}
+            return ({a: self._last_obs[a] for a in ended}, {a: 0.0 for a in ended},
+                    {a: True for a in ended}, {a: False for a in ended},
+                    {a: {"result": self.result} for a in ended})
         observations, rewards, terminations, truncations, infos = self._unpack(batch, self.agents)
         self.agents = [a for a in self.agents if not (terminations[a] or truncations[a])]
         if not self.agents:

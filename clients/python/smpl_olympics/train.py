@@ -25,7 +25,17 @@ import sys
 import time
 
 import numpy as np
-import torch
+
+try:
+    import torch
+except ImportError as missing:  # another Python than the one with PyTorch: say which, and what to do
+    _why = (f"the trainer runs in {sys.executable} (Python {sys.version.split()[0]}), which cannot "
+            f"import torch ({missing}): install PyTorch into that Python, or run the trainer with "
+            "the one that has it (Debian: sudo apt-get install python3-torch python3-matplotlib "
+            "libopenblas0-pthread, then /usr/bin/python3 -m smpl_olympics.train)")
+    if __name__ == "__main__":
+        sys.exit(_why)
+    raise ImportError(_why) from missing
 
 from . import catalog
 from ._client import NativePolicy
@@ -607,6 +617,9 @@ def main(argv=None):
         defaults = vars(parse_args([]))  # settings added since the run was stored
         args = argparse.Namespace(**{**defaults, **stored, **keep, "run": args.resume,
                                      "resume": args.resume})
+    if not args.quiet:
+        print(f"trainer: {sys.executable} (Python {sys.version.split()[0]}, torch "
+              f"{torch.__version__}, numpy {np.__version__})")
     trainer = Trainer(args)
     if args.resume:
         trainer.load(args.resume)

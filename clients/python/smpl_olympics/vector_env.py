@@ -19,7 +19,8 @@ import json
 import numpy as np
 
 from . import catalog
-from ._client import VectorClient
+from ._client import MatchError, VectorClient
+from .servers import CONNECT_TIMEOUT_S, check_capacity, find_servers, with_server_hint
 from .spaces import box
 
 
@@ -27,7 +28,8 @@ class OlympicsVectorEnv:
     def __init__(self, num_envs, sport="sandbox", mode="1v1", slots=None, seed=None,
                  time_limit_s=0.0, sport_options=None, realtime=False, server_id="",
                  request_prefix="", lcm_url="", agent_name="python", policy_id="",
-                 policy_version="", secret_file="", timeout_s=60.0, drop_rate=0.0, learner=""):
+                 policy_version="", secret_file="", timeout_s=60.0, drop_rate=0.0, learner="",
+                 connect_timeout_s=CONNECT_TIMEOUT_S):
         self.num_envs, self.sport, self.mode = int(num_envs), sport, mode
         spec = catalog.mode(sport, mode)
         if learner:  # the league says which slots, match by match: one team's worth
@@ -56,6 +58,20 @@ class OlympicsVectorEnv:
             learner=learner)
         self.seed = _fresh_seed() if seed is None else int(seed)
         self._client = None
+        # The first reset (or start) listens this long for the servers' announcements: none
+        # raises NoServerError; fewer matches admitted than num_envs raises CapacityError.
+        self._connect = dict(lcm_url=lcm_url, secret_file=secret_file, server_id=server_id,
+                             timeout_s=connect_timeout_s)
+        self._servers_checked = False
+
+    def _check_servers(self):
+        if self._servers_checked:
+            return
+        if self._settings["learner"]:  # the league requests the matches: only a server is needed
+            find_servers(**self._connect)
+        else:
+            check_capacity(self.num_envs, **self._connect)
+        self._servers_checked = True
 
     def reset(self, seed=None, options=None):
         """Starts num_envs new matches; returns (observations [envs, agents, obs], infos).
@@ -65,21 +81,23 @@ class OlympicsVectorEnv:
             self.seed = int(seed)
         elif self._client is not None:
             self.seed = _fresh_seed()
+        self._check_servers()
         self._client = VectorClient(seed=self.seed, **self._settings)
-        batch = self._client.reset()
+        batch = self._waiting(self._client.reset)
         return batch["obs"], {"match_ids": [self._client.match_id(e) for e in range(self.num_envs)]}
 
     def start(self, seed=None):
         """Async: starts every environment's first match without waiting; recv() returns each
         as it begins (a league's live learner gets its matches one by one)."""
         self.seed = int(seed) if seed is not None else self.seed
+        self._check_servers()
         self._client = VectorClient(seed=self.seed, **self._settings)
         self._client.start()
 
     def step(self, actions):
         """actions [num_envs, num_agents, action_size] -> observations, rewards, terminations,
         truncations, infos (reward_terms, episode_over, final_observation, tick)."""
-        batch = self._client.step(self._actions(actions, self.num_envs))
+        batch = self._waiting(self._client.step, self._actions(actions, self.num_envs))
         return self._unpack(batch)[1:]
 
     def send(self, actions, env_ids=None):
@@ -92,7 +110,7 @@ class OlympicsVectorEnv:
         """Async: the environments whose next observation has come (at least min_ready, or
         whatever came within timeout_s when given): (env_ids, observations, rewards,
         terminations, truncations, infos), rows in env_ids order."""
-        return self._unpack(self._client.recv(int(min_ready), timeout_s))
+        return self._unpack(self._waiting(self._client.recv, int(min_ready), timeout_s))
 
     def match_id(self, env):
         """The id of the match environment `env` plays now (its result carries it)."""
@@ -104,6 +122,16 @@ class OlympicsVectorEnv:
 
     def close(self):
         self._client = None
+
+    def _waiting(self, call, *args):
+        """call(*args), its TIMEOUT saying what to check: the server."""
+        try:
+            return call(*args)
+        except MatchError as error:
+            hinted = with_server_hint(error, self._settings["lcm_url"])
+            if hinted is error:
+                raise
+            raise hinted from error
 
     def _actions(self, actions, n):
         actions = np.ascontiguousarray(actions, dtype=np.float32)
