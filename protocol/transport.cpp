@@ -61,13 +61,17 @@ void Transport::unsubscribe(int handle) {
 }
 
 void Transport::publish_raw(const std::string& channel, const std::uint8_t* data, int size) {
+  send(channel, data, size, /*sign=*/true);
+}
+
+void Transport::send(const std::string& channel, const std::uint8_t* data, int size, bool sign) {
   std::lock_guard lock(publish_mutex_);
   ++published_;
   if (drop_rate_ > 0 && std::uniform_real_distribution<double>(0, 1)(drop_rng_) < drop_rate_) {
     ++dropped_;
     return;
   }
-  if (auth_) {
+  if (auth_ && sign) {
     signing_buffer_.assign(data, data + size);
     auth_->sign(channel, signing_buffer_.data(), size);
     data = signing_buffer_.data();
