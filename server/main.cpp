@@ -258,7 +258,7 @@ int main(int argc, char** argv) {
   auto* serve_cmd = app.add_subcommand("serve", "host matches until interrupted");
   server::ServerFlags flags;
   serve_cmd->add_option("--config", config_file, "TOML config file (flags override it)");
-  serve_cmd->add_option("--id", flags.id, "server id (default host-pid)");
+  serve_cmd->add_option("--id", flags.id, "server id: letters, digits and _ (default host_pid)");
   serve_cmd->add_option("--lcm-url", flags.lcm_url, "LCM provider URL");
   serve_cmd->add_option("--secret", flags.secret_file,
                         "the deployment's secret file: sign and check every message "

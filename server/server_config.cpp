@@ -3,6 +3,8 @@
 #include <toml++/toml.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -79,7 +81,12 @@ ServerConfig default_server_config() {
   ServerConfig c;
   char host[256] = "server";
   gethostname(host, sizeof host - 1);
-  c.host.server_id = std::string(host) + "-" + std::to_string(getpid());
+  // A server id is letters, digits and '_' only (validate_server_config): a host name's '-' and
+  // '.' become '_'.
+  std::string id = std::string(host) + "_" + std::to_string(getpid());
+  for (char& ch : id)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  c.host.server_id = id;
   c.host.realtime.max_missed_ticks = 90;  // 3 s at 30 Hz
   return c;
 }
@@ -176,10 +183,16 @@ void validate_runtime(const std::string& mode, const RuntimeSettings& r) {
 
 void validate_server_config(const ServerConfig& c) {
   const std::string& id = c.host.server_id;
-  if (id.empty() || id.size() > 64 || id.find_first_of(" \t\n/\\") != std::string::npos)
+  // Match ids are "<server id>-<boot>-<n>" and a server claims the matches whose id starts with
+  // its own and '-'; the id also names a channel LCM matches as a regular expression. So an id
+  // holds no '-' (server "a" would claim the matches of "a-b") and no regex characters.
+  const bool plain = std::all_of(id.begin(), id.end(), [](char ch) {
+    return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
+  });
+  if (id.empty() || id.size() > 64 || !plain)
     throw std::invalid_argument(
-        "setting server.id (--id) must be 1..64 characters without "
-        "spaces or slashes, got \"" +
+        "setting server.id (--id) must be 1..64 characters, each a letter (A-Z, a-z), a digit "
+        "or '_' (no '-', '.' or spaces: match ids are \"<id>-<boot>-<n>\"), got \"" +
         id + "\"");
   in_range("server.capacity (--capacity)", c.host.capacity, 1, 100000);
   in_range("server.workers (--workers)", c.host.workers, 0, 1024);

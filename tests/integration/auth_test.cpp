@@ -235,5 +235,22 @@ TEST(Auth, UnsignedCopiesOfRequestsDoNotStopALeague) {
   for (const auto& g : store.games("cup")) EXPECT_FALSE(g.match_id.empty());
 }
 
+// Two servers whose ids share a beginning: each plays its own matches and claims none of the
+// other's ("a" answered UNKNOWN_MATCH to every join and action of "a-b"; '-' is now refused).
+TEST(Auth, ServersWhoseIdsShareAPrefixKeepTheirOwnMatches) {
+  const std::string url = unique_lcm_url();
+  ServerFixture a({}, url, "", "a"), a_b({}, url, "", "a_b");
+  for (const char* id : {"a_b", "a"}) {
+    const auto r =
+        play(id == std::string("a") ? a : a_b, std::string("to_") + id, {"--server", id});
+    ASSERT_TRUE(r.contains("match_id")) << r.dump();
+    EXPECT_EQ(r.at("match_id").get<std::string>().rfind(std::string(id) + "-", 0), 0u) << r;
+  }
+  a.server().signal(SIGTERM), a_b.server().signal(SIGTERM);
+  a.server().wait(20), a_b.server().wait(20);
+  EXPECT_EQ(a.server().output().find("UNKNOWN_MATCH"), std::string::npos) << a.server().output();
+  EXPECT_EQ(a_b.server().output().find("UNKNOWN_MATCH"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace olympics::testing

@@ -215,6 +215,29 @@ TEST(BadInput, BadConfigFileNamesFileLineAndProblem) {
       << missing.output();
 }
 
+// Match ids are "<server id>-<boot>-<n>": a server "a" claimed every match of a server "a-b"
+// (issue 36, item 6), and an id is also part of a channel LCM reads as a regular expression.
+TEST(BadInput, AServerIdOtherThanLettersDigitsAndUnderscoreIsRefused) {
+  std::string dir = temp_dir();
+  for (std::string id : {"a-b", "s.*", "two words", "x/y"}) {
+    Process p(
+        {program("olympics-server"), "serve", "--id", id, "--results", dir + "/r.db", "--dry-run"},
+        dir + "/out.log");
+    EXPECT_EQ(p.wait(10), 2) << id << ": " << p.output();
+    EXPECT_NE(p.output().find("a letter (A-Z, a-z), a digit or '_'"), std::string::npos)
+        << p.output();
+    EXPECT_NE(p.output().find("got \"" + id + "\""), std::string::npos) << p.output();
+  }
+  Process fine({program("olympics-server"), "serve", "--id", "Lab_2", "--results", dir + "/r.db",
+                "--dry-run"},
+               dir + "/fine.log");
+  EXPECT_EQ(fine.wait(10), 0) << fine.output();
+  Process default_id({program("olympics-server"), "serve", "--results", dir + "/r.db", "--dry-run"},
+                     dir + "/default.log");
+  EXPECT_EQ(default_id.wait(10), 0) << "the default id (host_pid) is valid\n"
+                                    << default_id.output();
+}
+
 TEST(Config, TheExampleConfigLoadsAndFlagsOverrideIt) {
   std::string dir = temp_dir();
   Process p({program("olympics-server"), "serve", "--config",
@@ -222,7 +245,7 @@ TEST(Config, TheExampleConfigLoadsAndFlagsOverrideIt) {
              "--capacity", "7", "--dry-run"},
             dir + "/out.log");
   EXPECT_EQ(p.wait(10), 0) << p.output();
-  EXPECT_NE(p.output().find("config ok: id server-a"), std::string::npos) << p.output();
+  EXPECT_NE(p.output().find("config ok: id server_a"), std::string::npos) << p.output();
   EXPECT_NE(p.output().find("capacity 7"), std::string::npos) << p.output();
   EXPECT_NE(p.output().find("deadline 1000 ms, 5 missed ticks"), std::string::npos) << p.output();
 }
