@@ -31,6 +31,9 @@ Transport::Transport(const TransportOptions& options)
       drop_rate_(options.drop_rate),
       drop_rng_(options.drop_seed),
       auth_(options.auth) {
+  if (!(drop_rate_ >= 0 && drop_rate_ < 1))  // NaN too: it would drop nothing, silently
+    throw std::invalid_argument("the test drop rate (--drop-rate) must be in [0, 1), got " +
+                                std::to_string(drop_rate_));
   if (!lcm_.good())
     throw std::runtime_error(
         "LCM could not start on " + url_ +

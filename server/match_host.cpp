@@ -105,6 +105,7 @@ void MatchHost::run(const std::atomic<bool>& stop) {
     std::fprintf(stderr, "[server %s] could not record unfinished matches: %s\n",
                  settings_.server_id.c_str(), e.what());
   }
+  remove_unfinished_scene_tracks();
   transport_.subscribe(protocol::kRequest, [this](const std::string&, const std::uint8_t* d,
                                                   int n) { on_request(d, n); });
   // A client without the deployment's secret learns why it gets no answer. The answer is not
@@ -172,6 +173,27 @@ void MatchHost::run(const std::atomic<bool>& stop) {
       next_announce =
           now + std::chrono::milliseconds(static_cast<int>(settings_.announce_interval_s * 1000));
     }
+  }
+}
+
+// A crash (or a kill) leaves the scene tracks of the matches it cut short as <match>.scene.part:
+// never a whole track, so nothing reads them. This server's are those whose match id starts with
+// its id and '-' (an id holds no '-', so no other server's id begins the same way).
+void MatchHost::remove_unfinished_scene_tracks() {
+  if (settings_.replay_dir.empty()) return;
+  const std::string mine = settings_.server_id + "-";
+  std::error_code ec;
+  int removed = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(settings_.replay_dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(mine, 0) == 0 && name.ends_with(".scene.part") &&
+        std::filesystem::remove(entry.path(), ec))
+      ++removed;
+  }
+  if (removed > 0) {
+    std::printf("removed %d unfinished scene track(s) an earlier run of %s left\n", removed,
+                settings_.server_id.c_str());
+    std::fflush(stdout);
   }
 }
 

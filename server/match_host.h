@@ -88,6 +88,7 @@ class MatchHost {
   bool should_take_unaddressed_request();
   void announce();
   void worker_loop(Worker& worker);
+  void remove_unfinished_scene_tracks();
   std::unique_ptr<MatchRuntime> create_match(PendingMatch pending);
   void announce_created(const MatchRuntime& match, const std::string& request_id);
   void on_finished(MatchRuntime& match);

@@ -199,7 +199,7 @@ void validate_server_config(const ServerConfig& c) {
   in_range("server.view_port (--view-port)", c.view_port, 0, 65535);
   validate_runtime("sync", c.host.sync);
   validate_runtime("realtime", c.host.realtime);
-  if (c.transport.drop_rate < 0 || c.transport.drop_rate >= 1)
+  if (!(c.transport.drop_rate >= 0 && c.transport.drop_rate < 1))  // NaN too
     throw std::invalid_argument("setting test.drop_rate (--drop-rate) must be in [0, 1), got " +
                                 std::to_string(c.transport.drop_rate));
   if (c.results.empty())

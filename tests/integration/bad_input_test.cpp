@@ -110,6 +110,13 @@ TEST(BadInput, EveryBadMessageGetsAClearErrorAndTheMatchPlaysOn) {
   prank.transport().publish(act, action(a, 0, {7}, size));
   EXPECT_NE(prank.expect_error("UNKNOWN_SLOT").find("slot 7 does not exist"), std::string::npos);
 
+  // An empty batch counted as the client's action for the tick, and a slot named twice in one
+  // batch took the last of its actions silently (issue 36, item 9).
+  prank.transport().publish(act, action(a, 0, {}, size));
+  EXPECT_NE(prank.expect_error("BAD_ACTION").find("names no slot"), std::string::npos);
+  prank.transport().publish(act, action(a, 0, {0, 0}, size));
+  EXPECT_NE(prank.expect_error("BAD_ACTION").find("slot 0 appears twice"), std::string::npos);
+
   prank.transport().publish(act, action(a, 5, {0}, size));
   EXPECT_NE(prank.expect_error("FUTURE_TICK").find("the match is at tick 0"), std::string::npos);
 
@@ -236,6 +243,22 @@ TEST(BadInput, AServerIdOtherThanLettersDigitsAndUnderscoreIsRefused) {
                      dir + "/default.log");
   EXPECT_EQ(default_id.wait(10), 0) << "the default id (host_pid) is valid\n"
                                     << default_id.output();
+}
+
+TEST(BadInput, ANanDropRateIsRefusedByServerAndAgent) {
+  std::string dir = temp_dir();
+  Process p({program("olympics-server"), "serve", "--drop-rate", "nan", "--results", dir + "/r.db",
+             "--dry-run"},
+            dir + "/out.log");
+  EXPECT_EQ(p.wait(10), 2) << p.output();
+  EXPECT_NE(p.output().find("--drop-rate) must be in [0, 1), got"), std::string::npos)
+      << p.output();
+  EXPECT_NE(p.output().find("nan"), std::string::npos) << p.output();
+  Process agent({program("olympics-agent"), "--drop-rate", "nan", "--match", "srv-x-1"},
+                dir + "/agent.log");
+  EXPECT_EQ(agent.wait(10), 2) << agent.output();
+  EXPECT_NE(agent.output().find("(--drop-rate) must be in [0, 1), got"), std::string::npos)
+      << agent.output();
 }
 
 TEST(Config, TheExampleConfigLoadsAndFlagsOverrideIt) {
