@@ -245,6 +245,24 @@ TEST(League, TwoVersusTwoEachEntrantPlaysItsWholeTeam) {
 }
 
 // A tournament the servers refuse (an unknown sport, a bad setting) stops with their reason.
+// The league asks about each game it waits for with a heartbeat of its own (a server answers one
+// about a finished match with the result again). Those probes are the league's, not broken
+// messages: the server counted each as malformed, hiding real ones (issue 36, item 9).
+TEST(League, TheLeaguesProbesAreNotCountedAsMalformed) {
+  const std::string url = unique_lcm_url(), dir = temp_dir(), db = dir + "/league.db";
+  ServerFixture alpha({}, url, "", "alpha");
+  Process run({program("olympics-league"), "run", "--db", db, "--name", "probed", "--entrants",
+               "zero,random:1", "--time-limit", "2", "--lcm-url", url, "--log-dir", dir, "--quiet"},
+              dir + "/league.log");
+  ASSERT_EQ(run.wait(120), 0) << run.output();
+  alpha.server().signal(SIGTERM);
+  ASSERT_EQ(alpha.server().wait(20), 0);
+  const std::string out = alpha.server().output();
+  const auto at = out.find("refused ");
+  ASSERT_NE(at, std::string::npos) << out;
+  EXPECT_EQ(std::stol(out.substr(at + 8)), 0) << out;
+}
+
 TEST(League, ARefusedSpecStopsWithTheServersReason) {
   TwoServers servers;
   const std::string dir = temp_dir(), db = dir + "/league.db";
