@@ -1,5 +1,6 @@
 #include "transport.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "channels.h"
@@ -80,6 +81,23 @@ void Transport::send(const std::string& channel, const std::uint8_t* data, int s
     data = signing_buffer_.data();
   }
   lcm_.publish(channel, data, static_cast<unsigned>(size));
+}
+
+int multicast_ttl(const std::string& url) {
+  const auto query = url.find('?');
+  if (query == std::string::npos) return 0;
+  for (size_t at = query + 1; at < url.size();) {
+    const size_t end = std::min(url.find('&', at), url.size());
+    if (url.compare(at, 4, "ttl=") == 0) {
+      try {
+        return std::stoi(url.substr(at + 4, end - at - 4));
+      } catch (const std::exception&) {
+        return 1;  // unreadable: assume it leaves the host
+      }
+    }
+    at = end + 1;
+  }
+  return 0;
 }
 
 bool Transport::handle(int timeout_ms) { return lcm_.handleTimeout(timeout_ms) > 0; }

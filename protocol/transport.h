@@ -97,6 +97,10 @@ class Transport {
   RateLimiter complaints_{20};
 };
 
+// The multicast TTL an LCM URL sets (its "ttl=N"; LCM's default, 0, when it names none): above 0
+// its messages leave the host and anyone on the LAN can read and send them.
+int multicast_ttl(const std::string& url);
+
 // Decodes an LCM message; nullopt when the bytes are truncated, corrupt, or of another type or
 // version. It cannot crash or allocate without bound: the bytes are checked against the type's
 // layout first (wire_check.h), and anything the decoder still throws is caught.

@@ -9,6 +9,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "channels.h"
+
 namespace olympics::server {
 namespace {
 
@@ -144,6 +146,7 @@ void apply_flags(const ServerFlags& f, ServerConfig& c) {
   if (f.replay_dir) c.host.replay_dir = *f.replay_dir;
   if (f.lcm_logs) c.host.lcm_logs = true;
   if (f.no_scene_tracks) c.host.scene_tracks = false;
+  if (f.unsigned_lan) c.unsigned_lan = true;
   if (f.view_port) c.view_port = *f.view_port;
   if (f.view_host) c.view_host = *f.view_host;
   if (f.capacity) c.host.capacity = *f.capacity;
@@ -209,7 +212,16 @@ void validate_server_config(const ServerConfig& c) {
 }
 
 void check_server_resources(const ServerConfig& c) {
-  protocol::load_secret(c.secret_file);  // throws saying what is wrong with the file
+  const auto secret = protocol::load_secret(c.secret_file);  // throws saying what is wrong
+  const std::string url = c.transport.url.empty() ? protocol::kDefaultLcmUrl : c.transport.url;
+  // Unsigned, anyone who can reach the multicast group acts for any slot and forges results.
+  if (!secret && !c.unsigned_lan && protocol::multicast_ttl(url) > 0)
+    throw std::invalid_argument(
+        "the LCM URL " + url +
+        " reaches the LAN (ttl > 0) but no secret is given: anyone there "
+        "could act for any slot and forge results. Give --secret FILE (make one with "
+        "`olympics-server secret FILE`), keep ttl=0 for one host, or pass --unsigned-lan on a "
+        "network you trust");
   const bool postgres = c.results.rfind("postgres", 0) == 0;
   if (!postgres) {
     const auto slash = c.results.rfind('/');

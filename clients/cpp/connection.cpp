@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <random>
 
@@ -54,6 +55,12 @@ Connection::Connection(const ClientOptions& options)
       transport_({options.lcm_url, options.drop_rate, options.drop_seed,
                   protocol::load_secret(options.secret_file)}),
       exact_observation_channels_(transport_.url().rfind("mpudpm://", 0) == 0) {
+  if (!transport_.authenticating() && protocol::multicast_ttl(transport_.url()) > 0)
+    std::fprintf(stderr,
+                 "olympics client: NO SECRET on %s, which reaches the LAN (ttl > 0): messages are "
+                 "neither signed nor checked, anyone there can act for this client's slots "
+                 "(docs/security.md: --secret)\n",
+                 transport_.url().c_str());
   transport_.subscribe_to<olympics::match_created_t>(
       protocol::kCreated, [this](const std::string&, const olympics::match_created_t& m) {
         if (pending_requests_.count(m.request_id)) created_[m.request_id] = m;

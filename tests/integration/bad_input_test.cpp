@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "auth.h"
 #include "channels.h"
 #include "match_client.h"
 #include "olympics/action_batch_t.hpp"
@@ -259,6 +260,42 @@ TEST(BadInput, ANanDropRateIsRefusedByServerAndAgent) {
   EXPECT_EQ(agent.wait(10), 2) << agent.output();
   EXPECT_NE(agent.output().find("(--drop-rate) must be in [0, 1), got"), std::string::npos)
       << agent.output();
+}
+
+// Unsigned on a URL that leaves the host, anyone on the LAN acts for any slot: the server used to
+// warn only, and its clients said nothing (issue 36, item 9).
+TEST(BadInput, AnUnsignedServerOnALanUrlIsRefusedAndItsClientsSaySo) {
+  const std::string dir = temp_dir(), secret = dir + "/secret";
+  protocol::write_new_secret(secret);
+  const std::string lan = "udpm://239.255.76.67:7667?ttl=1";
+  auto serve = [&](std::vector<std::string> extra) {
+    std::vector<std::string> argv = {program("olympics-server"),
+                                     "serve",
+                                     "--lcm-url",
+                                     lan,
+                                     "--results",
+                                     dir + "/r.db",
+                                     "--dry-run"};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    auto p = std::make_unique<Process>(argv, dir + "/serve.log");
+    p->wait(10);
+    return p;
+  };
+  auto refused = serve({});
+  EXPECT_EQ(refused->wait(1), 2) << refused->output();
+  EXPECT_NE(refused->output().find("reaches the LAN (ttl > 0) but no secret is given"),
+            std::string::npos)
+      << refused->output();
+  EXPECT_NE(refused->output().find("--unsigned-lan"), std::string::npos) << refused->output();
+  auto trusted = serve({"--unsigned-lan"});
+  EXPECT_EQ(trusted->wait(1), 0) << trusted->output();
+  auto secured = serve({"--secret", secret});
+  EXPECT_EQ(secured->wait(1), 0) << secured->output();
+  Process agent({program("olympics-agent"), "--lcm-url", lan, "--match", "srv-x-1", "--slots", "0",
+                 "--timeout", "1"},
+                dir + "/agent.log");
+  agent.wait(30);
+  EXPECT_NE(agent.output().find("NO SECRET on " + lan), std::string::npos) << agent.output();
 }
 
 TEST(Config, TheExampleConfigLoadsAndFlagsOverrideIt) {
