@@ -303,6 +303,14 @@ std::optional<Assignment> Connection::take_assignment(const std::string& learner
   return std::nullopt;
 }
 
+std::string Connection::silence_hint() const {
+  if (transport_.authenticating() && transport_.unauthenticated() > 0)
+    return "; " + std::to_string(transport_.unauthenticated()) +
+           " message(s) heard here failed the signature check: the servers may use another "
+           "secret than this client's, or none (docs/security.md)";
+  return "";
+}
+
 std::vector<olympics::error_t> Connection::take_errors() {
   std::vector<olympics::error_t> out(errors_.begin(), errors_.end());
   errors_.clear();

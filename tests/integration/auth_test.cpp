@@ -235,6 +235,34 @@ TEST(Auth, UnsignedCopiesOfRequestsDoNotStopALeague) {
   for (const auto& g : store.games("cup")) EXPECT_FALSE(g.match_id.empty());
 }
 
+// A client with another secret than its server's, or with none against a signed one, or with one
+// against an unsigned server: its TIMEOUT says what is wrong, not only "is olympics-server
+// running?" (issue 36, item 8: misconfiguration).
+TEST(Auth, AClientWithTheWrongSecretIsToldWhyNothingAnswers) {
+  const std::string dir = temp_dir(), secret = new_secret(dir);
+  const std::string other = dir + "/other";
+  protocol::write_new_secret(other);
+  // An agent giving up after 3 s (the fixture's agents wait 30).
+  auto agent = [&](const ServerFixture& to, const std::string& name, const std::string& key) {
+    auto p = std::make_unique<Process>(
+        std::vector<std::string>{program("olympics-agent"), "--lcm-url", to.url(), "--name", name,
+                                 "--request-id", name, "--slots", "0", "--timeout", "3", "--secret",
+                                 key},
+        to.dir() + "/agent-" + name + ".log");
+    EXPECT_EQ(p->wait(30), 2) << p->output();
+    return p->output();
+  };
+  ServerFixture server({"--secret", secret});
+  const std::string wrong = agent(server, "wrong", other);
+  EXPECT_NE(wrong.find("TIMEOUT"), std::string::npos) << wrong;
+  EXPECT_NE(wrong.find("failed the signature check"), std::string::npos) << wrong;
+  ServerFixture open_server;
+  const std::string against_unsigned = agent(open_server, "signed", secret);
+  EXPECT_NE(against_unsigned.find("failed the signature check"), std::string::npos)
+      << against_unsigned;
+  EXPECT_NE(against_unsigned.find("or none"), std::string::npos) << against_unsigned;
+}
+
 // Two servers whose ids share a beginning: each plays its own matches and claims none of the
 // other's ("a" answered UNKNOWN_MATCH to every join and action of "a-b"; '-' is now refused).
 TEST(Auth, ServersWhoseIdsShareAPrefixKeepTheirOwnMatches) {
