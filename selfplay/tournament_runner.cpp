@@ -336,19 +336,41 @@ void TournamentRunner::refuse_if_no_server_offers_the_sport() {
   stop("no server hosts the sport \"" + spec_.sport + "\" (servers heard: " + seen + ")");
 }
 
+// No usable server has been live for server_wait_s: none runs on this URL, the named ones do not
+// exist, or their announcements fail the signature check. Waiting on in silence helps nobody.
+void TournamentRunner::stop_if_no_server_is_heard() {
+  const auto now = Clock::now();
+  const auto silence = std::chrono::duration<double>(settings_.server_silence_s);
+  for (const auto& [id, s] : servers_)
+    if (now - s.seen <= silence) last_server_heard_ = now;
+  if (now - last_server_heard_ < std::chrono::duration<double>(settings_.server_wait_s)) return;
+  std::string named;
+  for (const auto& id : settings_.servers) named += (named.empty() ? "" : ", ") + id;
+  std::string why = "no server" + (named.empty() ? "" : " of --servers " + named) +
+                    " announced itself on " + transport_.url() + " for " +
+                    std::to_string(static_cast<int>(settings_.server_wait_s)) +
+                    " s; is olympics-server running there (olympics-server serve --id ID)?";
+  if (transport_.unauthenticated() > 0)
+    why += " " + std::to_string(transport_.unauthenticated()) +
+           " message(s) heard failed the signature check: the servers may use another secret "
+           "than --secret, or none";
+  stop(why);
+}
+
 // Called from LCM's callbacks, which must not throw: run() throws once the callback returned.
 void TournamentRunner::stop(const std::string& why) {
   if (fatal_.empty()) fatal_ = why;
 }
 
 void TournamentRunner::run() {
-  started_ = Clock::now();
+  started_ = last_server_heard_ = Clock::now();
   for (;;) {
     if (!schedule_more()) break;
     dispatch();
     keep_in_touch();
     transport_.handle(10);
     refuse_if_no_server_offers_the_sport();
+    stop_if_no_server_is_heard();
     if (!fatal_.empty()) throw std::invalid_argument(fatal_);
   }
   show_progress();

@@ -10,6 +10,7 @@
 #include <set>
 #include <thread>
 
+#include "auth.h"
 #include "leaderboard.h"
 #include "league_store.h"
 #include "server_fixture.h"
@@ -261,6 +262,41 @@ TEST(League, TheLeaguesProbesAreNotCountedAsMalformed) {
   const auto at = out.find("refused ");
   ASSERT_NE(at, std::string::npos) << out;
   EXPECT_EQ(std::stol(out.substr(at + 8)), 0) << out;
+}
+
+// A league pointed at a server that does not exist, or holding another secret than its servers,
+// waited in silence for ever (issue 36, misconfiguration): it now stops after --server-wait-s,
+// naming what it looked for and, with a secret, the messages that failed the signature check.
+TEST(League, NoUsableServerStopsTheRunWithAReason) {
+  const std::string url = unique_lcm_url(), dir = temp_dir();
+  const std::string secret = dir + "/secret", other = dir + "/other";
+  protocol::write_new_secret(secret);
+  protocol::write_new_secret(other);
+  ServerFixture alpha({"--secret", secret}, url, "", "alpha");
+  auto run = [&](const std::string& name, std::vector<std::string> extra) {
+    std::vector<std::string> argv = {program("olympics-league"),
+                                     "run",
+                                     "--db",
+                                     dir + "/" + name + ".db",
+                                     "--name",
+                                     name,
+                                     "--entrants",
+                                     "zero,zero",
+                                     "--lcm-url",
+                                     url,
+                                     "--server-wait-s",
+                                     "3",
+                                     "--quiet"};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    Process p(argv, dir + "/" + name + ".log");
+    EXPECT_EQ(p.wait(60), 2) << p.output();
+    return p.output();
+  };
+  const std::string nosuch = run("nosuch", {"--servers", "nosuch", "--secret", secret});
+  EXPECT_NE(nosuch.find("no server of --servers nosuch announced itself"), std::string::npos)
+      << nosuch;
+  const std::string wrong = run("wrong", {"--secret", other});
+  EXPECT_NE(wrong.find("failed the signature check"), std::string::npos) << wrong;
 }
 
 TEST(League, ARefusedSpecStopsWithTheServersReason) {
