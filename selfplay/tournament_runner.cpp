@@ -193,7 +193,7 @@ void TournamentRunner::keep_in_touch() {
       olympics::heartbeat_t h;
       h.protocol_version = protocol::kProtocolVersion;
       h.match_id = g.match_id;
-      h.client_id = "league-" + spec_.name;
+      h.client_id = league_probe_id();
       transport_.publish(protocol::kHeartbeat, h);
       f.last_probe = now;
     }
@@ -220,17 +220,24 @@ void TournamentRunner::on_created(const olympics::match_created_t& created) {
 }
 
 // A server refused a game's request: a bad tournament spec (unknown sport or mode, a bad
-// setting) ends the run; a full server is asked again later.
+// setting) ends the run; a full server is asked again later. A server that restarted after a
+// crash answers the league's probe of a game's match (league_probe_id()) with UNKNOWN_MATCH: it
+// has recorded the match as aborted, and the game is played again.
 void TournamentRunner::on_error(const olympics::error_t& error) {
   for (auto& g : games_) {
-    if (g.status != GameStatus::Dispatched || g.server_id != error.server_id ||
-        error.message.rfind("request " + g.request_id + ":", 0) != 0)
-      continue;
+    if (g.status != GameStatus::Dispatched || g.server_id != error.server_id) continue;
+    if (error.code == "UNKNOWN_MATCH" && !g.match_id.empty() && error.match_id == g.match_id &&
+        error.client_id == league_probe_id())
+      return retry(g, "server " + g.server_id + " no longer knows match " + g.match_id +
+                          " (it restarted and recorded the match as aborted)");
+    if (error.message.rfind("request " + g.request_id + ":", 0) != 0) continue;
     if (error.code == "FULL") return retry(g, error.message);
     return stop("server " + error.server_id + " refused game " + std::to_string(g.index) + ": " +
                 error.code + ": " + error.message);
   }
 }
+
+std::string TournamentRunner::league_probe_id() const { return "league-" + spec_.name; }
 
 void TournamentRunner::start_workers(Game& g) {
   InFlight& f = in_flight_[g.index];

@@ -67,6 +67,7 @@ class TournamentRunner {
   void on_result(const olympics::match_result_t& result);
   void on_announce(const olympics::server_announce_t& announce);
   void on_error(const olympics::error_t& error);
+  std::string league_probe_id() const;  // the client id of its heartbeats about its games
   void stop(const std::string& why);
   void refuse_if_no_server_offers_the_sport();
   void stop_if_no_server_is_heard();

@@ -217,6 +217,40 @@ TEST(League, AGameOnAServerThatDiesIsPlayedAgainElsewhere) {
   EXPECT_GE(retried, 1);
 }
 
+// A server killed mid-game and restarted at once (within the 5 s a league waits for a silent
+// server) records the match as aborted; the league waited for its result for ever (issue 36,
+// item 5). The restarted server answers the league's probe with UNKNOWN_MATCH, and the game is
+// played again.
+TEST(League, AGameWhoseServerRestartedMidMatchIsPlayedAgain) {
+  const std::string url = unique_lcm_url(), dir = temp_dir(), db = dir + "/league.db";
+  auto serve = [&](const std::string& log) {
+    auto p = std::make_unique<Process>(
+        std::vector<std::string>{program("olympics-server"), "serve", "--lcm-url", url, "--results",
+                                 dir + "/results.db", "--replay-dir", dir + "/replays", "--id",
+                                 "phoenix"},
+        dir + "/" + log);
+    EXPECT_TRUE(p->wait_for_output("olympics-server", 60)) << p->output();
+    return p;
+  };
+  auto server = serve("first.log");
+  Process run({program("olympics-league"), "run", "--db", db, "--name", "phoenix_cup", "--entrants",
+               "zero,zero", "--time-limit", "3", "--lcm-url", url, "--log-dir", dir, "--quiet"},
+              dir + "/league.log");
+  ASSERT_TRUE(wait_for_games(db, "phoenix_cup", [](const auto& games) {
+    return !games.empty() && games[0].status == GameStatus::Dispatched &&
+           !games[0].match_id.empty();
+  }));
+  server->signal(SIGKILL);
+  server->wait(10);
+  auto back = serve("back.log");
+  ASSERT_EQ(run.wait(120), 0) << run.output();
+  EXPECT_NE(run.output().find("no longer knows match phoenix-"), std::string::npos) << run.output();
+  const auto games = selfplay::LeagueStore(db).games("phoenix_cup");
+  ASSERT_EQ(games.size(), 1u);
+  EXPECT_EQ(games[0].status, GameStatus::Done);
+  EXPECT_EQ(games[0].attempt, 1);
+}
+
 TEST(League, TwoVersusTwoEachEntrantPlaysItsWholeTeam) {
   TwoServers servers;
   const std::string dir = temp_dir(), db = dir + "/league.db";
