@@ -16,13 +16,13 @@ db=${OLYMPICS_RESULTS:-olympics-results.db}
 sport=${OLYMPICS_DEMO_SPORT:-table_tennis}
 options=${OLYMPICS_DEMO_OPTIONS:-'{"games_to_win":2,"points_per_game":6}'}
 mkdir -p replays
-"$bin/olympics-server" serve --lcm-url "$url" --results "$db" --replay-dir replays --id demo-$$ \
+"$bin/olympics-server" serve --lcm-url "$url" --results "$db" --replay-dir replays --id demo_$$ \
   > demo-server.log 2>&1 &
 server=$!
 trap 'kill $server 2>/dev/null; wait $server 2>/dev/null || true' EXIT
 request="demo-$$-$(date +%s)"
 # --server: the demo's own server hosts (and stores) the match, even with others on this URL
-common=(--lcm-url "$url" --server "demo-$$" --request-id "$request" --sport "$sport" --mode 1v1 --seed 7
+common=(--lcm-url "$url" --server "demo_$$" --request-id "$request" --sport "$sport" --mode 1v1 --seed 7
         --time-limit 180 --options "$options" --policy scripted)
 "$bin/olympics-agent" "${common[@]}" --slots 0 --name ace > demo-agent0.log 2>&1 &
 agent0=$!

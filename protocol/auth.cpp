@@ -75,6 +75,11 @@ Authenticator Authenticator::from_file(const std::string& path) {
   if (stat(path.c_str(), &st) != 0)
     throw std::runtime_error("secret file " + path + " cannot be read: " + std::strerror(errno) +
                              " (make one with `olympics-server secret " + path + "`)");
+  // Reading a FIFO or a device blocks or never ends: refuse before opening it.
+  if (!S_ISREG(st.st_mode))
+    throw std::runtime_error("secret file " + path +
+                             " is not a regular file (a FIFO, device or folder); give the file "
+                             "`olympics-server secret FILE` made");
   if (st.st_mode & (S_IRWXG | S_IRWXO))
     throw std::runtime_error("secret file " + path + " is open to other users; `chmod 600 " + path +
                              "` first");

@@ -1,5 +1,6 @@
 #include "transport.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "channels.h"
@@ -31,6 +32,9 @@ Transport::Transport(const TransportOptions& options)
       drop_rate_(options.drop_rate),
       drop_rng_(options.drop_seed),
       auth_(options.auth) {
+  if (!(drop_rate_ >= 0 && drop_rate_ < 1))  // NaN too: it would drop nothing, silently
+    throw std::invalid_argument("the test drop rate (--drop-rate) must be in [0, 1), got " +
+                                std::to_string(drop_rate_));
   if (!lcm_.good())
     throw std::runtime_error(
         "LCM could not start on " + url_ +
@@ -61,18 +65,39 @@ void Transport::unsubscribe(int handle) {
 }
 
 void Transport::publish_raw(const std::string& channel, const std::uint8_t* data, int size) {
+  send(channel, data, size, /*sign=*/true);
+}
+
+void Transport::send(const std::string& channel, const std::uint8_t* data, int size, bool sign) {
   std::lock_guard lock(publish_mutex_);
   ++published_;
   if (drop_rate_ > 0 && std::uniform_real_distribution<double>(0, 1)(drop_rng_) < drop_rate_) {
     ++dropped_;
     return;
   }
-  if (auth_) {
+  if (auth_ && sign) {
     signing_buffer_.assign(data, data + size);
     auth_->sign(channel, signing_buffer_.data(), size);
     data = signing_buffer_.data();
   }
   lcm_.publish(channel, data, static_cast<unsigned>(size));
+}
+
+int multicast_ttl(const std::string& url) {
+  const auto query = url.find('?');
+  if (query == std::string::npos) return 0;
+  for (size_t at = query + 1; at < url.size();) {
+    const size_t end = std::min(url.find('&', at), url.size());
+    if (url.compare(at, 4, "ttl=") == 0) {
+      try {
+        return std::stoi(url.substr(at + 4, end - at - 4));
+      } catch (const std::exception&) {
+        return 1;  // unreadable: assume it leaves the host
+      }
+    }
+    at = end + 1;
+  }
+  return 0;
 }
 
 bool Transport::handle(int timeout_ms) { return lcm_.handleTimeout(timeout_ms) > 0; }

@@ -4,6 +4,7 @@
 // injected datagram loss.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -55,6 +56,13 @@ class Transport {
   template <typename Msg>
   void publish(const std::string& channel, const Msg& msg);
   void publish_raw(const std::string& channel, const std::uint8_t* data, int size);
+  // Sends without a signature (its field zeroed), even with a secret: for answers to
+  // unauthenticated input. What a server signs, clients believe; an answer that echoes ids an
+  // outsider chose must not be believable, or the outsider could end any client's match by
+  // naming it (docs/security.md, "signed-error oracle"). Receivers with the secret drop it;
+  // a client without one (the misconfigured one it is meant for) reads it.
+  template <typename Msg>
+  void publish_unsigned(const std::string& channel, const Msg& msg);
 
   // Handles at most one message, waiting up to timeout_ms; returns true if one was handled.
   bool handle(int timeout_ms);
@@ -84,9 +92,14 @@ class Transport {
   std::shared_ptr<const Authenticator> auth_;
   RawHandler on_unauthenticated_;
   std::vector<std::uint8_t> signing_buffer_;  // under publish_mutex_
+  void send(const std::string& channel, const std::uint8_t* data, int size, bool sign);
   std::vector<std::unique_ptr<Subscription>> subscriptions_;
   RateLimiter complaints_{20};
 };
+
+// The multicast TTL an LCM URL sets (its "ttl=N"; LCM's default, 0, when it names none): above 0
+// its messages leave the host and anyone on the LAN can read and send them.
+int multicast_ttl(const std::string& url);
 
 // Decodes an LCM message; nullopt when the bytes are truncated, corrupt, or of another type or
 // version. It cannot crash or allocate without bound: the bytes are checked against the type's
@@ -128,6 +141,14 @@ template <typename Msg>
 void Transport::publish(const std::string& channel, const Msg& msg) {
   const auto buf = encode(msg);
   publish_raw(channel, buf.data(), static_cast<int>(buf.size()));
+}
+
+template <typename Msg>
+void Transport::publish_unsigned(const std::string& channel, const Msg& msg) {
+  auto buf = encode(msg);
+  if (buf.size() < static_cast<size_t>(kSignatureBytes)) return;
+  std::fill(buf.end() - kSignatureBytes, buf.end(), std::uint8_t{0});
+  send(channel, buf.data(), static_cast<int>(buf.size()), /*sign=*/false);
 }
 
 }  // namespace olympics::protocol

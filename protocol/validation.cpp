@@ -19,8 +19,16 @@ std::optional<ProtocolError> check_action_batch(const olympics::action_batch_t& 
     return ProtocolError{"BAD_ACTION", where + "action_size is " + std::to_string(b.action_size) +
                                            " but this match takes " + std::to_string(action_size) +
                                            " floats per slot; see `olympics-server describe`"};
+  if (b.num_slots == 0)
+    return ProtocolError{"BAD_ACTION", where +
+                                           "the batch names no slot; send one action for each "
+                                           "slot you own (the batch was ignored)"};
   for (int i = 0; i < b.num_slots; ++i) {
     int slot = b.slots[i];
+    if (std::find(b.slots.begin(), b.slots.begin() + i, slot) != b.slots.begin() + i)
+      return ProtocolError{"BAD_ACTION", where + "slot " + std::to_string(slot) +
+                                             " appears twice; send one action per slot (the "
+                                             "batch was ignored)"};
     if (slot < 0 || slot >= slot_count)
       return ProtocolError{"UNKNOWN_SLOT", where + "slot " + std::to_string(slot) +
                                                " does not exist (the match has " +

@@ -15,7 +15,8 @@ struct ProtocolError {
 };
 
 // An action batch for a match with `slot_count` slots of `action_size` floats, from a client that
-// owns `owned_slots`. Checks version, sizes, slot ownership and that every value is finite.
+// owns `owned_slots`. Checks version, sizes, slot ownership (at least one slot, none twice) and
+// that every value is finite.
 std::optional<ProtocolError> check_action_batch(const olympics::action_batch_t& batch,
                                                 int slot_count, int action_size,
                                                 const std::vector<int>& owned_slots);

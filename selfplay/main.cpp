@@ -124,6 +124,9 @@ int main(int argc, char** argv) {
                   "the sport's settings for every match, JSON (olympics-server describe SPORT)");
   run->add_option("--servers", runner.servers, "server ids to use (default: any)")->delimiter(',');
   run->add_option("--parallel", runner.parallel, "games at once")->check(CLI::PositiveNumber);
+  run->add_option("--server-wait-s", runner.server_wait_s,
+                  "stop when no usable server has announced itself this long")
+      ->check(CLI::PositiveNumber);
   run->add_option("--lcm-url", runner.lcm_url, "LCM provider URL");
   run->add_option("--secret", runner.secret_file,
                   "the deployment's secret file (default $OLYMPICS_SECRET_FILE; docs/security.md)");
@@ -163,6 +166,9 @@ int main(int argc, char** argv) {
     cmd->add_option("--servers", runner.servers, "server ids to use (default: any)")
         ->delimiter(',');
     cmd->add_option("--parallel", runner.parallel, "games at once")->check(CLI::PositiveNumber);
+    cmd->add_option("--server-wait-s", runner.server_wait_s,
+                    "stop when no usable server has announced itself this long")
+        ->check(CLI::PositiveNumber);
     cmd->add_option("--lcm-url", runner.lcm_url, "LCM provider URL");
     cmd->add_option("--secret", runner.secret_file,
                     "the deployment's secret file (default $OLYMPICS_SECRET_FILE)");

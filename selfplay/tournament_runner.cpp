@@ -193,7 +193,7 @@ void TournamentRunner::keep_in_touch() {
       olympics::heartbeat_t h;
       h.protocol_version = protocol::kProtocolVersion;
       h.match_id = g.match_id;
-      h.client_id = "league-" + spec_.name;
+      h.client_id = league_probe_id();
       transport_.publish(protocol::kHeartbeat, h);
       f.last_probe = now;
     }
@@ -220,17 +220,24 @@ void TournamentRunner::on_created(const olympics::match_created_t& created) {
 }
 
 // A server refused a game's request: a bad tournament spec (unknown sport or mode, a bad
-// setting) ends the run; a full server is asked again later.
+// setting) ends the run; a full server is asked again later. A server that restarted after a
+// crash answers the league's probe of a game's match (league_probe_id()) with UNKNOWN_MATCH: it
+// has recorded the match as aborted, and the game is played again.
 void TournamentRunner::on_error(const olympics::error_t& error) {
   for (auto& g : games_) {
-    if (g.status != GameStatus::Dispatched || g.server_id != error.server_id ||
-        error.message.rfind("request " + g.request_id + ":", 0) != 0)
-      continue;
+    if (g.status != GameStatus::Dispatched || g.server_id != error.server_id) continue;
+    if (error.code == "UNKNOWN_MATCH" && !g.match_id.empty() && error.match_id == g.match_id &&
+        error.client_id == league_probe_id())
+      return retry(g, "server " + g.server_id + " no longer knows match " + g.match_id +
+                          " (it restarted and recorded the match as aborted)");
+    if (error.message.rfind("request " + g.request_id + ":", 0) != 0) continue;
     if (error.code == "FULL") return retry(g, error.message);
     return stop("server " + error.server_id + " refused game " + std::to_string(g.index) + ": " +
                 error.code + ": " + error.message);
   }
 }
+
+std::string TournamentRunner::league_probe_id() const { return "league-" + spec_.name; }
 
 void TournamentRunner::start_workers(Game& g) {
   InFlight& f = in_flight_[g.index];
@@ -336,19 +343,41 @@ void TournamentRunner::refuse_if_no_server_offers_the_sport() {
   stop("no server hosts the sport \"" + spec_.sport + "\" (servers heard: " + seen + ")");
 }
 
+// No usable server has been live for server_wait_s: none runs on this URL, the named ones do not
+// exist, or their announcements fail the signature check. Waiting on in silence helps nobody.
+void TournamentRunner::stop_if_no_server_is_heard() {
+  const auto now = Clock::now();
+  const auto silence = std::chrono::duration<double>(settings_.server_silence_s);
+  for (const auto& [id, s] : servers_)
+    if (now - s.seen <= silence) last_server_heard_ = now;
+  if (now - last_server_heard_ < std::chrono::duration<double>(settings_.server_wait_s)) return;
+  std::string named;
+  for (const auto& id : settings_.servers) named += (named.empty() ? "" : ", ") + id;
+  std::string why = "no server" + (named.empty() ? "" : " of --servers " + named) +
+                    " announced itself on " + transport_.url() + " for " +
+                    std::to_string(static_cast<int>(settings_.server_wait_s)) +
+                    " s; is olympics-server running there (olympics-server serve --id ID)?";
+  if (transport_.unauthenticated() > 0)
+    why += " " + std::to_string(transport_.unauthenticated()) +
+           " message(s) heard failed the signature check: the servers may use another secret "
+           "than --secret, or none";
+  stop(why);
+}
+
 // Called from LCM's callbacks, which must not throw: run() throws once the callback returned.
 void TournamentRunner::stop(const std::string& why) {
   if (fatal_.empty()) fatal_ = why;
 }
 
 void TournamentRunner::run() {
-  started_ = Clock::now();
+  started_ = last_server_heard_ = Clock::now();
   for (;;) {
     if (!schedule_more()) break;
     dispatch();
     keep_in_touch();
     transport_.handle(10);
     refuse_if_no_server_offers_the_sport();
+    stop_if_no_server_is_heard();
     if (!fatal_.empty()) throw std::invalid_argument(fatal_);
   }
   show_progress();

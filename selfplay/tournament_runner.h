@@ -29,6 +29,7 @@ struct RunnerSettings {
   std::string agent_program;         // path of olympics-agent
   std::string log_dir = "/tmp";      // policy workers' output
   double server_silence_s = 5;       // a server not announcing this long is gone
+  double server_wait_s = 60;         // no usable server heard this long: stop, saying so
   bool progress = true;              // a progress bar on stderr
   std::string secret_file;           // "" = $OLYMPICS_SECRET_FILE, or none; its workers get it too
 };
@@ -66,8 +67,10 @@ class TournamentRunner {
   void on_result(const olympics::match_result_t& result);
   void on_announce(const olympics::server_announce_t& announce);
   void on_error(const olympics::error_t& error);
+  std::string league_probe_id() const;  // the client id of its heartbeats about its games
   void stop(const std::string& why);
   void refuse_if_no_server_offers_the_sport();
+  void stop_if_no_server_is_heard();
   void start_workers(Game& game);
   void assign_live(const Game& game);
   void retry(Game& game, const std::string& why);
@@ -86,7 +89,8 @@ class TournamentRunner {
   std::map<std::string, Server> servers_;             // those that host the sport
   std::map<std::string, std::string> other_servers_;  // id -> the sports it hosts
   Clock::time_point started_;
-  std::string fatal_;  // why the run cannot go on (a bad spec the servers refuse)
+  Clock::time_point last_server_heard_;  // a usable server was live (or the run started)
+  std::string fatal_;                    // why the run cannot go on (a bad spec the servers refuse)
 };
 
 }  // namespace olympics::selfplay

@@ -258,7 +258,7 @@ int main(int argc, char** argv) {
   auto* serve_cmd = app.add_subcommand("serve", "host matches until interrupted");
   server::ServerFlags flags;
   serve_cmd->add_option("--config", config_file, "TOML config file (flags override it)");
-  serve_cmd->add_option("--id", flags.id, "server id (default host-pid)");
+  serve_cmd->add_option("--id", flags.id, "server id: letters, digits and _ (default host_pid)");
   serve_cmd->add_option("--lcm-url", flags.lcm_url, "LCM provider URL");
   serve_cmd->add_option("--secret", flags.secret_file,
                         "the deployment's secret file: sign and check every message "
@@ -268,6 +268,8 @@ int main(int argc, char** argv) {
   serve_cmd->add_option("--results", flags.results, "SQLite file or postgresql:// URL");
   serve_cmd->add_option("--replay-dir", flags.replay_dir, "write <match>.replay files here");
   serve_cmd->add_flag("--lcm-logs", flags.lcm_logs, "also write <match>.lcmlog (lcm-logplayer)");
+  serve_cmd->add_flag("--unsigned-lan", flags.unsigned_lan,
+                      "TRUSTED NETWORKS ONLY: serve without a secret on a URL with ttl > 0");
   serve_cmd->add_flag("--no-scene-tracks", flags.no_scene_tracks,
                       "do not write <match>.scene (the viewer's data) beside replays");
   serve_cmd->add_option("--view-port", flags.view_port,
@@ -340,8 +342,8 @@ int main(int argc, char** argv) {
       if (!config_file.empty()) server::load_server_config_file(config_file, config);
       server::apply_flags(flags, config);
       server::validate_server_config(config);
+      server::check_server_resources(config);
       if (dry_run) {
-        server::check_server_resources(config);
         std::printf("%s", server::describe_server_config(config).c_str());
         return 0;
       }

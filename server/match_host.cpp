@@ -71,7 +71,7 @@ double MatchHost::worker_cpu_seconds() const {
 int MatchHost::active_matches() const { return playing_; }
 
 void MatchHost::error(const std::string& match_id, const std::string& client_id,
-                      const std::string& code, const std::string& message) {
+                      const std::string& code, const std::string& message, Signing signing) {
   if ((code == "MALFORMED" || code == "UNAUTHENTICATED" || code == "UNKNOWN_MATCH") &&
       !transport_.may_complain())
     return;
@@ -84,7 +84,10 @@ void MatchHost::error(const std::string& match_id, const std::string& client_id,
   e.message = message;
   std::fprintf(stderr, "[server %s] %s: %s\n", settings_.server_id.c_str(), code.c_str(),
                message.c_str());
-  transport_.publish(protocol::kError, e);
+  if (signing == Signing::Unsigned)
+    transport_.publish_unsigned(protocol::kError, e);
+  else
+    transport_.publish(protocol::kError, e);
 }
 
 void MatchHost::run(const std::atomic<bool>& stop) {
@@ -102,19 +105,23 @@ void MatchHost::run(const std::atomic<bool>& stop) {
     std::fprintf(stderr, "[server %s] could not record unfinished matches: %s\n",
                  settings_.server_id.c_str(), e.what());
   }
+  remove_unfinished_scene_tracks();
   transport_.subscribe(protocol::kRequest, [this](const std::string&, const std::uint8_t* d,
                                                   int n) { on_request(d, n); });
-  // A client without the deployment's secret (or with another) learns why it gets no answer.
+  // A client without the deployment's secret learns why it gets no answer. The answer is not
+  // signed: it names ids the sender chose, and a signed one would let anyone end another
+  // client's match or request by naming it (the client would believe its server).
   transport_.on_unauthenticated([this](const std::string& ch, const std::uint8_t* d, int n) {
     const std::string why =
         "this server checks signatures: give the client the deployment's secret (--secret FILE "
         "or $OLYMPICS_SECRET_FILE); unsigned or forged messages are dropped";
     if (ch == protocol::kJoin) {
       if (auto join = protocol::decode<olympics::join_t>(d, n))
-        error(join->match_id, join->client_id, "UNAUTHENTICATED", why);
+        error(join->match_id, join->client_id, "UNAUTHENTICATED", why, Signing::Unsigned);
     } else if (ch == protocol::kRequest) {
       if (auto req = protocol::decode<olympics::match_request_t>(d, n))
-        error("", "", "UNAUTHENTICATED", "request " + req->request_id + ": " + why);
+        error("", "", "UNAUTHENTICATED", "request " + req->request_id + ": " + why,
+              Signing::Unsigned);
     }
   });
   transport_.subscribe_to<olympics::server_announce_t>(
@@ -166,6 +173,27 @@ void MatchHost::run(const std::atomic<bool>& stop) {
       next_announce =
           now + std::chrono::milliseconds(static_cast<int>(settings_.announce_interval_s * 1000));
     }
+  }
+}
+
+// A crash (or a kill) leaves the scene tracks of the matches it cut short as <match>.scene.part:
+// never a whole track, so nothing reads them. This server's are those whose match id starts with
+// its id and '-' (an id holds no '-', so no other server's id begins the same way).
+void MatchHost::remove_unfinished_scene_tracks() {
+  if (settings_.replay_dir.empty()) return;
+  const std::string mine = settings_.server_id + "-";
+  std::error_code ec;
+  int removed = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(settings_.replay_dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(mine, 0) == 0 && name.ends_with(".scene.part") &&
+        std::filesystem::remove(entry.path(), ec))
+      ++removed;
+  }
+  if (removed > 0) {
+    std::printf("removed %d unfinished scene track(s) an earlier run of %s left\n", removed,
+                settings_.server_id.c_str());
+    std::fflush(stdout);
   }
 }
 

@@ -88,14 +88,18 @@ class MatchHost {
   bool should_take_unaddressed_request();
   void announce();
   void worker_loop(Worker& worker);
+  void remove_unfinished_scene_tracks();
   std::unique_ptr<MatchRuntime> create_match(PendingMatch pending);
   void announce_created(const MatchRuntime& match, const std::string& request_id);
   void on_finished(MatchRuntime& match);
   void retire(Worker& worker, std::unique_ptr<MatchRuntime> finished);
   void note_in_progress(const MatchRuntime& match, const MatchIdentity& id);
   void note_players(const MatchRuntime& match);
+  // How an error goes out: signed (an answer to a message of the deployment) or unsigned (an
+  // answer to unauthenticated input, whose ids an outsider chose: see Transport::publish_unsigned).
+  enum class Signing { Signed, Unsigned };
   void error(const std::string& match_id, const std::string& client_id, const std::string& code,
-             const std::string& message);
+             const std::string& message, Signing signing = Signing::Signed);
 
   HostSettings settings_;
   protocol::Transport& transport_;

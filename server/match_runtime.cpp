@@ -278,11 +278,12 @@ void MatchRuntime::record(Step step) {
 // A heartbeat counts only from a client of this match, in this protocol version; anything else
 // is dropped and counted (answering every stray heartbeat would let one flood the network).
 void MatchRuntime::on_heartbeat(const olympics::heartbeat_t& beat, Clock::time_point now) {
-  const int c = client_index(beat.client_id);
-  if (c < 0 || protocol::version_mismatch(beat.protocol_version) ||
-      beat.match_id != identity_.match_id)
+  if (protocol::version_mismatch(beat.protocol_version) || beat.match_id != identity_.match_id)
     return transport_.count_malformed();
-  clients_[c].last_heard = now;
+  // One from no client of the match is a watcher's probe (a league asks about its games this
+  // way): well formed, nothing to do while the match runs.
+  const int c = client_index(beat.client_id);
+  if (c >= 0) clients_[c].last_heard = now;
 }
 
 void MatchRuntime::on_actions(const olympics::action_batch_t& batch, Clock::time_point now,

@@ -3,9 +3,13 @@
 #include <toml++/toml.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+
+#include "channels.h"
 
 namespace olympics::server {
 namespace {
@@ -79,7 +83,12 @@ ServerConfig default_server_config() {
   ServerConfig c;
   char host[256] = "server";
   gethostname(host, sizeof host - 1);
-  c.host.server_id = std::string(host) + "-" + std::to_string(getpid());
+  // A server id is letters, digits and '_' only (validate_server_config): a host name's '-' and
+  // '.' become '_'.
+  std::string id = std::string(host) + "_" + std::to_string(getpid());
+  for (char& ch : id)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  c.host.server_id = id;
   c.host.realtime.max_missed_ticks = 90;  // 3 s at 30 Hz
   return c;
 }
@@ -137,6 +146,7 @@ void apply_flags(const ServerFlags& f, ServerConfig& c) {
   if (f.replay_dir) c.host.replay_dir = *f.replay_dir;
   if (f.lcm_logs) c.host.lcm_logs = true;
   if (f.no_scene_tracks) c.host.scene_tracks = false;
+  if (f.unsigned_lan) c.unsigned_lan = true;
   if (f.view_port) c.view_port = *f.view_port;
   if (f.view_host) c.view_host = *f.view_host;
   if (f.capacity) c.host.capacity = *f.capacity;
@@ -176,17 +186,23 @@ void validate_runtime(const std::string& mode, const RuntimeSettings& r) {
 
 void validate_server_config(const ServerConfig& c) {
   const std::string& id = c.host.server_id;
-  if (id.empty() || id.size() > 64 || id.find_first_of(" \t\n/\\") != std::string::npos)
+  // Match ids are "<server id>-<boot>-<n>" and a server claims the matches whose id starts with
+  // its own and '-'; the id also names a channel LCM matches as a regular expression. So an id
+  // holds no '-' (server "a" would claim the matches of "a-b") and no regex characters.
+  const bool plain = std::all_of(id.begin(), id.end(), [](char ch) {
+    return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
+  });
+  if (id.empty() || id.size() > 64 || !plain)
     throw std::invalid_argument(
-        "setting server.id (--id) must be 1..64 characters without "
-        "spaces or slashes, got \"" +
+        "setting server.id (--id) must be 1..64 characters, each a letter (A-Z, a-z), a digit "
+        "or '_' (no '-', '.' or spaces: match ids are \"<id>-<boot>-<n>\"), got \"" +
         id + "\"");
   in_range("server.capacity (--capacity)", c.host.capacity, 1, 100000);
   in_range("server.workers (--workers)", c.host.workers, 0, 1024);
   in_range("server.view_port (--view-port)", c.view_port, 0, 65535);
   validate_runtime("sync", c.host.sync);
   validate_runtime("realtime", c.host.realtime);
-  if (c.transport.drop_rate < 0 || c.transport.drop_rate >= 1)
+  if (!(c.transport.drop_rate >= 0 && c.transport.drop_rate < 1))  // NaN too
     throw std::invalid_argument("setting test.drop_rate (--drop-rate) must be in [0, 1), got " +
                                 std::to_string(c.transport.drop_rate));
   if (c.results.empty())
@@ -196,7 +212,16 @@ void validate_server_config(const ServerConfig& c) {
 }
 
 void check_server_resources(const ServerConfig& c) {
-  protocol::load_secret(c.secret_file);  // throws saying what is wrong with the file
+  const auto secret = protocol::load_secret(c.secret_file);  // throws saying what is wrong
+  const std::string url = c.transport.url.empty() ? protocol::kDefaultLcmUrl : c.transport.url;
+  // Unsigned, anyone who can reach the multicast group acts for any slot and forges results.
+  if (!secret && !c.unsigned_lan && protocol::multicast_ttl(url) > 0)
+    throw std::invalid_argument(
+        "the LCM URL " + url +
+        " reaches the LAN (ttl > 0) but no secret is given: anyone there "
+        "could act for any slot and forge results. Give --secret FILE (make one with "
+        "`olympics-server secret FILE`), keep ttl=0 for one host, or pass --unsigned-lan on a "
+        "network you trust");
   const bool postgres = c.results.rfind("postgres", 0) == 0;
   if (!postgres) {
     const auto slash = c.results.rfind('/');

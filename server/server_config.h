@@ -18,6 +18,7 @@ struct ServerConfig {
   std::string secret_file;                      // "" = $OLYMPICS_SECRET_FILE, or none
   int view_port = 0;                            // live viewer's HTTP port; 0 = none
   std::string view_host = "127.0.0.1";          // where it listens (0.0.0.0: every interface)
+  bool unsigned_lan = false;  // serve without a secret on a URL that leaves the host (ttl > 0)
 };
 
 // What the command line gave; each set one wins over the file.
@@ -29,6 +30,7 @@ struct ServerFlags {
   std::optional<std::uint64_t> drop_seed;
   bool lcm_logs = false;
   bool no_scene_tracks = false;
+  bool unsigned_lan = false;
 };
 
 ServerConfig default_server_config();
@@ -37,7 +39,8 @@ void load_server_config_file(const std::string& path, ServerConfig& config);
 void apply_flags(const ServerFlags& flags, ServerConfig& config);
 // Throws std::invalid_argument naming the first setting out of its range and the range.
 void validate_server_config(const ServerConfig& config);
-// For --dry-run: the secret loads and the results folder is writable (throws saying which not).
+// Before serving (and for --dry-run): the secret loads, a URL that reaches the LAN has one (unless
+// unsigned_lan), and the results folder is writable (throws saying which not).
 void check_server_resources(const ServerConfig& config);
 std::string describe_server_config(const ServerConfig& config);
 

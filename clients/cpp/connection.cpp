@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <random>
 
@@ -54,6 +55,12 @@ Connection::Connection(const ClientOptions& options)
       transport_({options.lcm_url, options.drop_rate, options.drop_seed,
                   protocol::load_secret(options.secret_file)}),
       exact_observation_channels_(transport_.url().rfind("mpudpm://", 0) == 0) {
+  if (!transport_.authenticating() && protocol::multicast_ttl(transport_.url()) > 0)
+    std::fprintf(stderr,
+                 "olympics client: NO SECRET on %s, which reaches the LAN (ttl > 0): messages are "
+                 "neither signed nor checked, anyone there can act for this client's slots "
+                 "(docs/security.md: --secret)\n",
+                 transport_.url().c_str());
   transport_.subscribe_to<olympics::match_created_t>(
       protocol::kCreated, [this](const std::string&, const olympics::match_created_t& m) {
         if (pending_requests_.count(m.request_id)) created_[m.request_id] = m;
@@ -65,13 +72,7 @@ Connection::Connection(const ClientOptions& options)
         join_replies_[m.match_id] = {m.accepted != 0, m.reason, m.match};
       });
   transport_.subscribe_to<olympics::error_t>(
-      protocol::kError, [this](const std::string&, const olympics::error_t& m) {
-        bool about_my_request = false;
-        if (m.client_id.empty())
-          for (const auto& id : pending_requests_)
-            if (m.message.find(id) != std::string::npos) about_my_request = true;
-        if (m.client_id == client_id_ || about_my_request) push_bounded(errors_, m, kMaxQueued);
-      });
+      protocol::kError, [this](const std::string&, const olympics::error_t& m) { on_error(m); });
   transport_.subscribe_to<olympics::league_assignment_t>(
       protocol::kLeague, [this](const std::string&, const olympics::league_assignment_t& a) {
         if (assigned_matches_.count(a.match_id)) return;
@@ -151,9 +152,30 @@ std::optional<olympics::match_created_t> Connection::take_created(const std::str
   return created;
 }
 
+// A server's error about a request starts "request <id>: " (and names no client); naming the id
+// elsewhere in the text proves nothing (another request's id may contain it).
+static bool answers_request(const olympics::error_t& e, const std::string& request_id) {
+  return e.client_id.empty() && e.message.rfind("request " + request_id + ":", 0) == 0;
+}
+
+// Only an error that names what this client sent is acted on: one of its pending requests, or
+// its own id with a match it joined or plays (or none: a refused bundle of its own). With a
+// secret the transport has already dropped every error the server did not sign. Errors for
+// other clients are none of its business; those naming this client with a match it does not
+// hold are counted (ignored_errors()): a server never sends them, so something else did.
+void Connection::on_error(const olympics::error_t& e) {
+  bool mine = false;
+  for (const auto& id : pending_requests_) mine = mine || answers_request(e, id);
+  if (e.client_id == client_id_)
+    mine =
+        e.match_id.empty() || observation_routes_.count(e.match_id) || watched_.count(e.match_id);
+  if (mine) return push_bounded(errors_, e, kMaxQueued);
+  if (e.client_id == client_id_) ++ignored_errors_;
+}
+
 std::optional<olympics::error_t> Connection::take_request_error(const std::string& request_id) {
   for (auto it = errors_.begin(); it != errors_.end(); ++it)
-    if (it->client_id.empty() && it->message.find(request_id) != std::string::npos) {
+    if (answers_request(*it, request_id)) {
       auto e = std::move(*it);
       errors_.erase(it);
       return e;
@@ -279,6 +301,14 @@ std::optional<Assignment> Connection::take_assignment(const std::string& learner
     return a;
   }
   return std::nullopt;
+}
+
+std::string Connection::silence_hint() const {
+  if (transport_.authenticating() && transport_.unauthenticated() > 0)
+    return "; " + std::to_string(transport_.unauthenticated()) +
+           " message(s) heard here failed the signature check: the servers may use another "
+           "secret than this client's, or none (docs/security.md)";
+  return "";
 }
 
 std::vector<olympics::error_t> Connection::take_errors() {

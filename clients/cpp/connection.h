@@ -142,6 +142,13 @@ class Connection {
   std::optional<Assignment> take_assignment(const std::string& learner);
   // Errors the server addressed to this client (or to its requests) since the last call.
   std::vector<olympics::error_t> take_errors();
+  // Why nothing may be answering, for a TIMEOUT's message ("" when nothing suggests it): with a
+  // secret, messages that failed the signature check (servers with another secret, or none).
+  // Only words: an outsider can send unsigned messages too, so nothing is decided on them.
+  // (Without a secret, a signed server answers with UNAUTHENTICATED itself.)
+  std::string silence_hint() const;
+  // Errors that named this client with a match it neither joined nor plays: ignored.
+  long ignored_errors() const { return ignored_errors_; }
 
  private:
   ClientOptions options_;
@@ -152,6 +159,8 @@ class Connection {
   std::map<std::string, JoinReply> join_replies_;                           // by match id
   std::map<std::string, std::optional<olympics::match_result_t>> watched_;  // by match id
   std::deque<olympics::error_t> errors_;
+  long ignored_errors_ = 0;
+  void on_error(const olympics::error_t& e);
   std::deque<Assignment> assignments_;  // heard, not yet handed out
   std::set<std::string> assigned_matches_;
   std::map<std::string, ServerSeen> servers_;  // by id, from their announcements

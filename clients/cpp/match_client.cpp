@@ -18,7 +18,7 @@ olympics::match_created_t request_match(Connection& c, const MatchRequest& r, do
       throw MatchError("TIMEOUT", "no server answered the request for " + r.sport + " " + r.mode +
                                       " within " + std::to_string(timeout_s) +
                                       " s; is olympics-server running on " + c.transport().url() +
-                                      "?");
+                                      "?" + c.silence_hint());
     if (now >= next_send) {
       c.send_request(req);
       next_send = now + seconds(0.25);
@@ -44,7 +44,7 @@ olympics::match_created_t join_match(Connection& c, const std::string& match_id,
     auto now = Connection::Clock::now();
     if (now >= deadline)
       throw MatchError("TIMEOUT", "no answer to the join of match " + match_id + " within " +
-                                      std::to_string(timeout_s) + " s");
+                                      std::to_string(timeout_s) + " s" + c.silence_hint());
     if (now >= next_send) {
       c.send_join(match_id, slots);
       next_send = now + seconds(0.25);

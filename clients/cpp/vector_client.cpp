@@ -164,7 +164,8 @@ void VectorClient::advance(Env& env, Connection::Clock::time_point now, bool mai
   }
   if (now - env.last_progress > seconds(settings_.timeout_s))
     throw MatchError("TIMEOUT", where() + "nothing from its match for " +
-                                    std::to_string(settings_.timeout_s) + " s");
+                                    std::to_string(settings_.timeout_s) + " s" +
+                                    connection_.silence_hint());
 }
 
 void VectorClient::collect_results() {

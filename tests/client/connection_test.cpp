@@ -7,6 +7,7 @@
 
 #include "channels.h"
 #include "match_session.h"
+#include "olympics/error_t.hpp"
 #include "olympics/join_reply_t.hpp"
 #include "version.h"
 
@@ -122,6 +123,42 @@ TEST(Connection, ResendsWaitForTwiceTheLongestRecentRoundTripWithinBounds) {
   EXPECT_GE(connection.resend_interval_s(), base);
   connection.note_round_trip(5.0);  // a stall, not a pace
   EXPECT_DOUBLE_EQ(connection.resend_interval_s(), 1.0);
+}
+
+olympics::error_t error(const std::string& match_id, const std::string& client_id,
+                        const std::string& code, const std::string& message) {
+  olympics::error_t e{};
+  e.protocol_version = protocol::kProtocolVersion;
+  e.server_id = "srv";
+  e.match_id = match_id, e.client_id = client_id, e.code = code, e.message = message;
+  return e;
+}
+
+// A client acts on an error only when it names what the client sent (issue 36, item 1): its
+// pending request as the message's subject ("request <id>: "), not as any substring, and its
+// own client id only with a match it joined.
+TEST(Connection, ActsOnlyOnErrorsThatNameWhatItSent) {
+  Connection connection(in_process());
+  connection.send_request(Connection::request_message({}, "r1"));
+  connection.send_join("srv-1", {0});
+  auto& t = connection.transport();
+  t.publish(protocol::kError, error("", "", "BAD_REQUEST", "request r12: another request"));
+  t.publish(protocol::kError, error("", "", "FULL", "server x: request r1: not the subject"));
+  t.publish(protocol::kError,
+            error("srv-2", connection.client_id(), "UNKNOWN_MATCH", "a match never joined"));
+  connection.drain();
+  EXPECT_FALSE(connection.take_request_error("r1").has_value());
+  EXPECT_FALSE(connection.fatal_error("srv-2").has_value());
+  EXPECT_EQ(connection.ignored_errors(), 1);
+
+  t.publish(protocol::kError, error("", "", "FULL", "request r1: server srv is full"));
+  t.publish(protocol::kError,
+            error("srv-1", connection.client_id(), "UNKNOWN_MATCH", "a match it joined"));
+  connection.drain();
+  auto refused = connection.take_request_error("r1");
+  ASSERT_TRUE(refused.has_value());
+  EXPECT_EQ(refused->code, "FULL");
+  EXPECT_TRUE(connection.fatal_error("srv-1").has_value());
 }
 
 }  // namespace

@@ -82,6 +82,20 @@ class Attacker {
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
     });
   }
+  // Sends, unsigned, two copies of every request and join it hears (the same ids, the signature
+  // zeroed: it has no key). A server that answered them with a signed UNAUTHENTICATED naming
+  // those ids would be an oracle: the real clients would believe their requests and joins
+  // refused and give up.
+  void echo_requests_and_joins() {
+    for (const char* channel : {protocol::kRequest, protocol::kJoin})
+      transport_.subscribe(channel, [this](const std::string& ch, const std::uint8_t* d, int n) {
+        if (n < protocol::kSignatureBytes) return;
+        std::vector<std::uint8_t> copy(d, d + n);
+        std::fill(copy.end() - protocol::kSignatureBytes, copy.end(), std::uint8_t{0});
+        for (int i = 0; i < 2; ++i) transport_.publish_raw(ch, copy.data(), n), ++sent_;
+      });
+    start();
+  }
   long sent() const { return sent_; }
   void stop() {
     running_ = false;
@@ -184,6 +198,86 @@ TEST(Auth, ForgedResultsAndAFakeServerAreIgnored) {
     EXPECT_EQ(g.reason, m->reason);
     EXPECT_EQ(g.home_score, m->winner_team == 0 ? 1.0 : m->winner_team == 1 ? 0.0 : 0.5);
   }
+}
+
+// The signed-error oracle (issue 36, item 1): an outsider copies the ids of every request and
+// join into unsigned ones; the server answers them unsigned, so the real clients, which hold
+// the secret, drop the answer, and their match plays to its end.
+TEST(Auth, UnsignedCopiesOfRequestsAndJoinsEndNoClientsMatch) {
+  const std::string dir = temp_dir(), secret = new_secret(dir);
+  ServerFixture server({"--secret", secret});
+  Attacker attacker(server.url());
+  attacker.echo_requests_and_joins();
+  const auto r = play(server, "victim", {"--secret", secret});
+  attacker.stop();
+  EXPECT_GT(attacker.sent(), 0);
+  ASSERT_TRUE(r.contains("match_id")) << r.dump();
+  EXPECT_TRUE(server.store()->find(r.at("match_id")).has_value());
+}
+
+// The same against a league: before, its first game's request was "refused" and the run stopped
+// (exit 2, no game played).
+TEST(Auth, UnsignedCopiesOfRequestsDoNotStopALeague) {
+  const std::string url = unique_lcm_url(), dir = temp_dir(), secret = new_secret(dir);
+  ServerFixture alpha({"--secret", secret}, url, "", "alpha");
+  Attacker attacker(url);
+  attacker.echo_requests_and_joins();
+  const std::string db = dir + "/league.db";
+  Process run({program("olympics-league"), "run", "--db", db, "--name", "cup", "--entrants",
+               "zero,random:1", "--time-limit", "2", "--lcm-url", url, "--secret", secret,
+               "--log-dir", dir, "--quiet"},
+              dir + "/league.log");
+  ASSERT_EQ(run.wait(120), 0) << run.output();
+  attacker.stop();
+  EXPECT_GT(attacker.sent(), 0);
+  selfplay::LeagueStore store(db);
+  EXPECT_FALSE(store.games("cup").empty());
+  for (const auto& g : store.games("cup")) EXPECT_FALSE(g.match_id.empty());
+}
+
+// A client with another secret than its server's, or with none against a signed one, or with one
+// against an unsigned server: its TIMEOUT says what is wrong, not only "is olympics-server
+// running?" (issue 36, item 8: misconfiguration).
+TEST(Auth, AClientWithTheWrongSecretIsToldWhyNothingAnswers) {
+  const std::string dir = temp_dir(), secret = new_secret(dir);
+  const std::string other = dir + "/other";
+  protocol::write_new_secret(other);
+  // An agent giving up after 3 s (the fixture's agents wait 30).
+  auto agent = [&](const ServerFixture& to, const std::string& name, const std::string& key) {
+    auto p = std::make_unique<Process>(
+        std::vector<std::string>{program("olympics-agent"), "--lcm-url", to.url(), "--name", name,
+                                 "--request-id", name, "--slots", "0", "--timeout", "3", "--secret",
+                                 key},
+        to.dir() + "/agent-" + name + ".log");
+    EXPECT_EQ(p->wait(30), 2) << p->output();
+    return p->output();
+  };
+  ServerFixture server({"--secret", secret});
+  const std::string wrong = agent(server, "wrong", other);
+  EXPECT_NE(wrong.find("TIMEOUT"), std::string::npos) << wrong;
+  EXPECT_NE(wrong.find("failed the signature check"), std::string::npos) << wrong;
+  ServerFixture open_server;
+  const std::string against_unsigned = agent(open_server, "signed", secret);
+  EXPECT_NE(against_unsigned.find("failed the signature check"), std::string::npos)
+      << against_unsigned;
+  EXPECT_NE(against_unsigned.find("or none"), std::string::npos) << against_unsigned;
+}
+
+// Two servers whose ids share a beginning: each plays its own matches and claims none of the
+// other's ("a" answered UNKNOWN_MATCH to every join and action of "a-b"; '-' is now refused).
+TEST(Auth, ServersWhoseIdsShareAPrefixKeepTheirOwnMatches) {
+  const std::string url = unique_lcm_url();
+  ServerFixture a({}, url, "", "a"), a_b({}, url, "", "a_b");
+  for (const char* id : {"a_b", "a"}) {
+    const auto r =
+        play(id == std::string("a") ? a : a_b, std::string("to_") + id, {"--server", id});
+    ASSERT_TRUE(r.contains("match_id")) << r.dump();
+    EXPECT_EQ(r.at("match_id").get<std::string>().rfind(std::string(id) + "-", 0), 0u) << r;
+  }
+  a.server().signal(SIGTERM), a_b.server().signal(SIGTERM);
+  a.server().wait(20), a_b.server().wait(20);
+  EXPECT_EQ(a.server().output().find("UNKNOWN_MATCH"), std::string::npos) << a.server().output();
+  EXPECT_EQ(a_b.server().output().find("UNKNOWN_MATCH"), std::string::npos);
 }
 
 }  // namespace

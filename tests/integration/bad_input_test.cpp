@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "auth.h"
 #include "channels.h"
 #include "match_client.h"
 #include "olympics/action_batch_t.hpp"
@@ -110,6 +111,13 @@ TEST(BadInput, EveryBadMessageGetsAClearErrorAndTheMatchPlaysOn) {
   prank.transport().publish(act, action(a, 0, {7}, size));
   EXPECT_NE(prank.expect_error("UNKNOWN_SLOT").find("slot 7 does not exist"), std::string::npos);
 
+  // An empty batch counted as the client's action for the tick, and a slot named twice in one
+  // batch took the last of its actions silently (issue 36, item 9).
+  prank.transport().publish(act, action(a, 0, {}, size));
+  EXPECT_NE(prank.expect_error("BAD_ACTION").find("names no slot"), std::string::npos);
+  prank.transport().publish(act, action(a, 0, {0, 0}, size));
+  EXPECT_NE(prank.expect_error("BAD_ACTION").find("slot 0 appears twice"), std::string::npos);
+
   prank.transport().publish(act, action(a, 5, {0}, size));
   EXPECT_NE(prank.expect_error("FUTURE_TICK").find("the match is at tick 0"), std::string::npos);
 
@@ -215,6 +223,81 @@ TEST(BadInput, BadConfigFileNamesFileLineAndProblem) {
       << missing.output();
 }
 
+// Match ids are "<server id>-<boot>-<n>": a server "a" claimed every match of a server "a-b"
+// (issue 36, item 6), and an id is also part of a channel LCM reads as a regular expression.
+TEST(BadInput, AServerIdOtherThanLettersDigitsAndUnderscoreIsRefused) {
+  std::string dir = temp_dir();
+  for (std::string id : {"a-b", "s.*", "two words", "x/y"}) {
+    Process p(
+        {program("olympics-server"), "serve", "--id", id, "--results", dir + "/r.db", "--dry-run"},
+        dir + "/out.log");
+    EXPECT_EQ(p.wait(10), 2) << id << ": " << p.output();
+    EXPECT_NE(p.output().find("a letter (A-Z, a-z), a digit or '_'"), std::string::npos)
+        << p.output();
+    EXPECT_NE(p.output().find("got \"" + id + "\""), std::string::npos) << p.output();
+  }
+  Process fine({program("olympics-server"), "serve", "--id", "Lab_2", "--results", dir + "/r.db",
+                "--dry-run"},
+               dir + "/fine.log");
+  EXPECT_EQ(fine.wait(10), 0) << fine.output();
+  Process default_id({program("olympics-server"), "serve", "--results", dir + "/r.db", "--dry-run"},
+                     dir + "/default.log");
+  EXPECT_EQ(default_id.wait(10), 0) << "the default id (host_pid) is valid\n"
+                                    << default_id.output();
+}
+
+TEST(BadInput, ANanDropRateIsRefusedByServerAndAgent) {
+  std::string dir = temp_dir();
+  Process p({program("olympics-server"), "serve", "--drop-rate", "nan", "--results", dir + "/r.db",
+             "--dry-run"},
+            dir + "/out.log");
+  EXPECT_EQ(p.wait(10), 2) << p.output();
+  EXPECT_NE(p.output().find("--drop-rate) must be in [0, 1), got"), std::string::npos)
+      << p.output();
+  EXPECT_NE(p.output().find("nan"), std::string::npos) << p.output();
+  Process agent({program("olympics-agent"), "--drop-rate", "nan", "--match", "srv-x-1"},
+                dir + "/agent.log");
+  EXPECT_EQ(agent.wait(10), 2) << agent.output();
+  EXPECT_NE(agent.output().find("(--drop-rate) must be in [0, 1), got"), std::string::npos)
+      << agent.output();
+}
+
+// Unsigned on a URL that leaves the host, anyone on the LAN acts for any slot: the server used to
+// warn only, and its clients said nothing (issue 36, item 9).
+TEST(BadInput, AnUnsignedServerOnALanUrlIsRefusedAndItsClientsSaySo) {
+  const std::string dir = temp_dir(), secret = dir + "/secret";
+  protocol::write_new_secret(secret);
+  const std::string lan = "udpm://239.255.76.67:7667?ttl=1";
+  auto serve = [&](std::vector<std::string> extra) {
+    std::vector<std::string> argv = {program("olympics-server"),
+                                     "serve",
+                                     "--lcm-url",
+                                     lan,
+                                     "--results",
+                                     dir + "/r.db",
+                                     "--dry-run"};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    auto p = std::make_unique<Process>(argv, dir + "/serve.log");
+    p->wait(10);
+    return p;
+  };
+  auto refused = serve({});
+  EXPECT_EQ(refused->wait(1), 2) << refused->output();
+  EXPECT_NE(refused->output().find("reaches the LAN (ttl > 0) but no secret is given"),
+            std::string::npos)
+      << refused->output();
+  EXPECT_NE(refused->output().find("--unsigned-lan"), std::string::npos) << refused->output();
+  auto trusted = serve({"--unsigned-lan"});
+  EXPECT_EQ(trusted->wait(1), 0) << trusted->output();
+  auto secured = serve({"--secret", secret});
+  EXPECT_EQ(secured->wait(1), 0) << secured->output();
+  Process agent({program("olympics-agent"), "--lcm-url", lan, "--match", "srv-x-1", "--slots", "0",
+                 "--timeout", "1"},
+                dir + "/agent.log");
+  agent.wait(30);
+  EXPECT_NE(agent.output().find("NO SECRET on " + lan), std::string::npos) << agent.output();
+}
+
 TEST(Config, TheExampleConfigLoadsAndFlagsOverrideIt) {
   std::string dir = temp_dir();
   Process p({program("olympics-server"), "serve", "--config",
@@ -222,7 +305,7 @@ TEST(Config, TheExampleConfigLoadsAndFlagsOverrideIt) {
              "--capacity", "7", "--dry-run"},
             dir + "/out.log");
   EXPECT_EQ(p.wait(10), 0) << p.output();
-  EXPECT_NE(p.output().find("config ok: id server-a"), std::string::npos) << p.output();
+  EXPECT_NE(p.output().find("config ok: id server_a"), std::string::npos) << p.output();
   EXPECT_NE(p.output().find("capacity 7"), std::string::npos) << p.output();
   EXPECT_NE(p.output().find("deadline 1000 ms, 5 missed ticks"), std::string::npos) << p.output();
 }

@@ -10,6 +10,7 @@
 #include <set>
 #include <thread>
 
+#include "auth.h"
 #include "leaderboard.h"
 #include "league_store.h"
 #include "server_fixture.h"
@@ -216,6 +217,40 @@ TEST(League, AGameOnAServerThatDiesIsPlayedAgainElsewhere) {
   EXPECT_GE(retried, 1);
 }
 
+// A server killed mid-game and restarted at once (within the 5 s a league waits for a silent
+// server) records the match as aborted; the league waited for its result for ever (issue 36,
+// item 5). The restarted server answers the league's probe with UNKNOWN_MATCH, and the game is
+// played again.
+TEST(League, AGameWhoseServerRestartedMidMatchIsPlayedAgain) {
+  const std::string url = unique_lcm_url(), dir = temp_dir(), db = dir + "/league.db";
+  auto serve = [&](const std::string& log) {
+    auto p = std::make_unique<Process>(
+        std::vector<std::string>{program("olympics-server"), "serve", "--lcm-url", url, "--results",
+                                 dir + "/results.db", "--replay-dir", dir + "/replays", "--id",
+                                 "phoenix"},
+        dir + "/" + log);
+    EXPECT_TRUE(p->wait_for_output("olympics-server", 60)) << p->output();
+    return p;
+  };
+  auto server = serve("first.log");
+  Process run({program("olympics-league"), "run", "--db", db, "--name", "phoenix_cup", "--entrants",
+               "zero,zero", "--time-limit", "3", "--lcm-url", url, "--log-dir", dir, "--quiet"},
+              dir + "/league.log");
+  ASSERT_TRUE(wait_for_games(db, "phoenix_cup", [](const auto& games) {
+    return !games.empty() && games[0].status == GameStatus::Dispatched &&
+           !games[0].match_id.empty();
+  }));
+  server->signal(SIGKILL);
+  server->wait(10);
+  auto back = serve("back.log");
+  ASSERT_EQ(run.wait(120), 0) << run.output();
+  EXPECT_NE(run.output().find("no longer knows match phoenix-"), std::string::npos) << run.output();
+  const auto games = selfplay::LeagueStore(db).games("phoenix_cup");
+  ASSERT_EQ(games.size(), 1u);
+  EXPECT_EQ(games[0].status, GameStatus::Done);
+  EXPECT_EQ(games[0].attempt, 1);
+}
+
 TEST(League, TwoVersusTwoEachEntrantPlaysItsWholeTeam) {
   TwoServers servers;
   const std::string dir = temp_dir(), db = dir + "/league.db";
@@ -245,6 +280,59 @@ TEST(League, TwoVersusTwoEachEntrantPlaysItsWholeTeam) {
 }
 
 // A tournament the servers refuse (an unknown sport, a bad setting) stops with their reason.
+// The league asks about each game it waits for with a heartbeat of its own (a server answers one
+// about a finished match with the result again). Those probes are the league's, not broken
+// messages: the server counted each as malformed, hiding real ones (issue 36, item 9).
+TEST(League, TheLeaguesProbesAreNotCountedAsMalformed) {
+  const std::string url = unique_lcm_url(), dir = temp_dir(), db = dir + "/league.db";
+  ServerFixture alpha({}, url, "", "alpha");
+  Process run({program("olympics-league"), "run", "--db", db, "--name", "probed", "--entrants",
+               "zero,random:1", "--time-limit", "2", "--lcm-url", url, "--log-dir", dir, "--quiet"},
+              dir + "/league.log");
+  ASSERT_EQ(run.wait(120), 0) << run.output();
+  alpha.server().signal(SIGTERM);
+  ASSERT_EQ(alpha.server().wait(20), 0);
+  const std::string out = alpha.server().output();
+  const auto at = out.find("refused ");
+  ASSERT_NE(at, std::string::npos) << out;
+  EXPECT_EQ(std::stol(out.substr(at + 8)), 0) << out;
+}
+
+// A league pointed at a server that does not exist, or holding another secret than its servers,
+// waited in silence for ever (issue 36, misconfiguration): it now stops after --server-wait-s,
+// naming what it looked for and, with a secret, the messages that failed the signature check.
+TEST(League, NoUsableServerStopsTheRunWithAReason) {
+  const std::string url = unique_lcm_url(), dir = temp_dir();
+  const std::string secret = dir + "/secret", other = dir + "/other";
+  protocol::write_new_secret(secret);
+  protocol::write_new_secret(other);
+  ServerFixture alpha({"--secret", secret}, url, "", "alpha");
+  auto run = [&](const std::string& name, std::vector<std::string> extra) {
+    std::vector<std::string> argv = {program("olympics-league"),
+                                     "run",
+                                     "--db",
+                                     dir + "/" + name + ".db",
+                                     "--name",
+                                     name,
+                                     "--entrants",
+                                     "zero,zero",
+                                     "--lcm-url",
+                                     url,
+                                     "--server-wait-s",
+                                     "3",
+                                     "--quiet"};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    Process p(argv, dir + "/" + name + ".log");
+    EXPECT_EQ(p.wait(60), 2) << p.output();
+    return p.output();
+  };
+  const std::string nosuch = run("nosuch", {"--servers", "nosuch", "--secret", secret});
+  EXPECT_NE(nosuch.find("no server of --servers nosuch announced itself"), std::string::npos)
+      << nosuch;
+  const std::string wrong = run("wrong", {"--secret", other});
+  EXPECT_NE(wrong.find("failed the signature check"), std::string::npos) << wrong;
+}
+
 TEST(League, ARefusedSpecStopsWithTheServersReason) {
   TwoServers servers;
   const std::string dir = temp_dir(), db = dir + "/league.db";

@@ -4,6 +4,8 @@
 // result that cannot be stored is an error the agents see.
 #include <csignal>
 #include <filesystem>
+#include <fstream>
+#include <thread>
 
 #include "server_fixture.h"
 #include "sql_database.h"
@@ -67,13 +69,27 @@ TEST(Restart, MatchesACrashCutShortAreRecordedAsAbortedWhenTheServerComesBack) {
             {"--request-id", "doomed", "--slots", "1", "--think-ms", "50", "--time-limit", "600"});
   ASSERT_TRUE(a->wait_for_output("joined", 30)) << a->output();
   ASSERT_TRUE(b->wait_for_output("joined", 30)) << b->output();
+  // The match's scene track (the viewer's data) is written to <match>.scene.part until the
+  // match ends: the crash comes once it is.
+  auto parts = [&] {
+    std::vector<std::string> names;
+    for (const auto& f : std::filesystem::directory_iterator(dir + "/replays"))
+      if (f.path().string().ends_with(".scene.part")) names.push_back(f.path().filename());
+    return names;
+  };
+  for (int i = 0; i < 300 && parts().empty(); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
   server->signal(SIGKILL);
   server->wait(10);
+  ASSERT_EQ(parts().size(), 1u) << "the crash left the unfinished track";
+  std::ofstream(dir + "/replays/phoenix_2-x-1.scene.part") << "another server's";
   // Its agents learn that their server is gone and stop (their own timeout is 120 s).
   EXPECT_EQ(a->wait(60), 2);
   EXPECT_NE(a->output().find("SERVER_GONE"), std::string::npos) << a->output();
   auto back = start_server(url, dir, db, "back.log");
   ASSERT_TRUE(back->wait_for_output("left unfinished as aborted", 10)) << back->output();
+  // Coming back, it removes what the crash left of its own matches, and only that.
+  EXPECT_EQ(parts(), std::vector<std::string>{"phoenix_2-x-1.scene.part"});
   const auto rows = server::open_results_store(db)->recent(10);
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0].reason.rfind("aborted: server phoenix stopped", 0), 0u) << rows[0].reason;

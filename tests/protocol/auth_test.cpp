@@ -79,5 +79,21 @@ TEST(Auth, SecretFilesAreMadePrivateAndCheckedWhenRead) {
   }
 }
 
+// A FIFO (or a device, a folder) given as the secret: reading it blocked forever, so even
+// `olympics-server serve --dry-run` hung in silence (issue 36, item 9).
+TEST(Auth, ASecretThatIsNotARegularFileIsRefusedWithoutReadingIt) {
+  const std::string dir = temp_dir(), fifo = dir + "/fifo";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  for (const std::string& path : {fifo, dir}) {
+    chmod(path.c_str(), 0700);
+    try {
+      Authenticator::from_file(path);
+      ADD_FAILURE() << path << " was accepted";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("is not a regular file"), std::string::npos) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace olympics::protocol
