@@ -74,12 +74,13 @@ class ViewerTest(unittest.TestCase):
         return f"file://{self.page}?{query}"
 
     def test_humanoids_are_drawn_where_the_track_puts_them(self):
-        url = self.page_url(frame=120, camera="broadcast")
-        state, _ = browser.probe(url)
-        self.assertEqual(state["frame"], 120)
+        # The probe and the picture from one page, so that both show the same frame through the
+        # same camera (two page loads may frame a moving match differently).
+        with browser.LivePage(self.page_url(frame=120, camera="broadcast")) as page:
+            state = page.wait_for_probe(lambda p: p.get("frame") == 120 and p.get("roots"))
+            image = page.screenshot(os.path.join(self.dir, "frame120.png"))
         roots = {r["slot"]: r for r in state["roots"]}
         self.assertEqual(sorted(roots), [0, 1])
-        image = browser.screenshot(url, os.path.join(self.dir, "frame120.png"))
         for slot, colour in ((0, browser.reddish), (1, browser.bluish)):
             root = roots[slot]
             self.assertTrue(0 < root["x"] < browser.WIDTH and 0 < root["y"] < browser.HEIGHT, root)
