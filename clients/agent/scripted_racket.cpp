@@ -108,10 +108,6 @@ struct ScriptedRacketPolicy::Sport {
 ScriptedRacketPolicy::ScriptedRacketPolicy() = default;
 ScriptedRacketPolicy::~ScriptedRacketPolicy() = default;
 
-double ScriptedRacketPolicy::reach_error() const {
-  return sport_ ? sport_->arm.last().position_error_m : 0;
-}
-
 void ScriptedRacketPolicy::start(const MatchInfo& match) {
   if (match.sport != "tennis" && match.sport != "table_tennis")
     throw std::invalid_argument("the scripted racket policy plays tennis and table tennis, not " +
@@ -235,7 +231,6 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
     return g;
   };
   const control::LimbGoal now = goal_at(play.ask_ahead_s);
-  face_goal_ = now.position;
   sport_->arm.drive(pose, now, goal_at(play.ask_ahead_s + control_dt_), control_dt_, a);
   // The trunk held straight against the swinging arm's weight; the free arm hangs at the side.
   static constexpr int kTorso[] = {control::kSmplTorso};

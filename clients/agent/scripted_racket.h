@@ -48,10 +48,6 @@ class ScriptedRacketPolicy : public Policy {
     Eigen::Vector3d stance;     // where the root should be to meet it at the sweet spot
   };
   const std::optional<Stroke>& stroke() const { return stroke_; }
-  // Where the face was last asked to be at the end of the tick (heading frame).
-  const Eigen::Vector3d& face_goal() const { return face_goal_; }
-  // How far the arm's inverse kinematics fell short of that goal, m.
-  double reach_error() const;
 
  private:
   struct Sport;
@@ -76,7 +72,6 @@ class ScriptedRacketPolicy : public Policy {
   double control_dt_ = 0;
   std::optional<StepController> legs_;
   std::optional<Stroke> stroke_;
-  Eigen::Vector3d face_goal_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d root_velocity_ = Eigen::Vector3d::Zero();  // heading frame, this tick
   double since_stroke_s_ = 1e9;                              // time since the last planned contact
 };
