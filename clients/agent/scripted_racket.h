@@ -4,15 +4,17 @@
 // - prediction: the ball's path is stepped forward with the server's own flight model (drag,
 //   bounces off the court or table and the net) from the observed ball;
 // - the stroke: on that path it picks the point to meet the ball (after its bounce on the own
-//   side, within the racket arm's reach) and plans the shot to a point deep in the middle of the
-//   far half: the outgoing velocity that clears the net, and the face normal and speed that give
-//   it (control/stroke_plan.h);
-// - the arm: the face is drawn back along that normal and swung through the meeting point at the
-//   planned speed, timed to the ball; each tick the arm's joints come from inverse kinematics of
-//   the face's pose (control/limb_ik.h), with gravity compensation and velocity feed-forward as
-//   PD-target offsets (control/drive_target.h);
-// - the legs: a StepController stands (ankle/hip balance) while the ball is within reach and
-//   walks the player toward where it will be otherwise; between balls it walks back home.
+//   side, within the racket arm's reach, or where the legs can take the body in time) and plans
+//   the shot to a point deep in the middle of the far half: the outgoing velocity that clears the
+//   net, and the face normal and speed along a level swing that give it (control/stroke_plan.h);
+// - the arm: the face is drawn back along that level line and swung through the meeting point at
+//   the planned speed, timed to the ball; each tick the arm's joints come from inverse kinematics
+//   of the face's pose (control/limb_control.h), with gravity compensation and velocity
+//   feed-forward as PD-target offsets (control/drive_target.h), the root's motion allowed for;
+// - the legs: a StepController walks toward where the ball will be met, then stands balancing
+//   the centre of mass (control/body_model.h) while the arm swings; between balls it walks home.
+// In doubles, table-tennis partners strike in turn and tennis partners take the nearer ball.
+// docs/racket-sports.md has its figures.
 #pragma once
 
 #include <memory>
