@@ -286,7 +286,8 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
     if (was_coming_ && !team_coming)
       my_turn_ = struck_this_turn_ ? 0 : 1, struck_this_turn_ = false;
     was_coming_ = team_coming;
-    coming = coming && my_ball(court, partner, ball);
+    const bool mine = my_ball(court, partner, ball);  // every tick: it watches for a new point
+    coming = coming && mine;
   }
   if (coming && stroke_ && stroke_->reachable &&
       stroke_->time_to_hit - control_dt_ < play.commit_s) {
