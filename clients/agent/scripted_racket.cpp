@@ -99,6 +99,8 @@ struct ScriptedRacketPolicy::Sport {
   control::BallPath path;
   control::BodyModel model;
   control::LimbControl arm;
+  // The ball's centre is this far off the face's centre plane at contact.
+  double face_back = game.ball.radius + game.equipment.face.half_thickness;
   // The arm's own reach, from the shoulder to the face centre.
   double arm_reach = control::LimbIk(model, control::smpl_right_arm(), game.equipment.face_centre,
                                      Eigen::Vector3d::UnitZ())
@@ -113,8 +115,8 @@ void ScriptedRacketPolicy::start(const MatchInfo& match) {
     throw std::invalid_argument("the scripted racket policy plays tennis and table tennis, not " +
                                 match.sport);
   const ObservationLayout& l = match.observation;
-  blocks_ = {l.offset("ball_position"),  l.offset("ball_velocity"), l.offset("target"),
-             l.offset("court_position"), l.offset("court_heading"), l.offset("rally")};
+  blocks_ = {l.offset("ball_position"), l.offset("ball_velocity"), l.offset("court_position"),
+             l.offset("court_heading"), l.offset("rally")};
   const bool table = match.sport == "table_tennis";
   if (!sport_ || sport_->game.on_table != table)
     sport_ = std::make_unique<Sport>(table ? sports::racket::table_tennis_game()
@@ -141,7 +143,7 @@ void ScriptedRacketPolicy::plan(std::span<const float> o, const CourtFrame& cour
       sport_->path.predict(ball, velocity, play.horizon_s, bounced);
   const Eigen::Vector3d shoulder = pose.position[kRShoulder];
   const double reach = play.reach_fraction * sport_->arm_reach + play.trunk_reach;
-  const double face_back = game.ball.radius + game.equipment.face.half_thickness;
+  const double face_back = sport_->face_back;
   const Eigen::Vector3d spot = court.vector(play.sweet_spot);  // sweet spot from the root, court
 
   // Where to meet the ball: after its one bounce on the own side, clear of the table. Points
@@ -196,25 +198,27 @@ void ScriptedRacketPolicy::plan(std::span<const float> o, const CourtFrame& cour
 void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& pose,
                                      std::span<float> a) {
   const Play& play = sport_->play;
-  const auto& game = sport_->game;
-  const double face_back = game.ball.radius + game.equipment.face.half_thickness;
+  const double face_back = sport_->face_back;
 
   const Eigen::Vector3d root_velocity(root_velocity_.x(), root_velocity_.y(), 0);
+  // Drawn back by the swing's length, then swung through the ball at the planned speed; no
+  // further back than the arm reaches (a goal out of reach bends the whole swing).
+  double speed = 0, back = 0;
+  if (stroke_) {
+    speed = std::clamp(stroke_->speed, 0.0, play.max_speed);
+    const Eigen::Vector3d contact = court.to_heading_point(stroke_->ball_at) -
+                                    court.to_heading_vector(stroke_->normal) * face_back;
+    const Eigen::Vector3d line = court.to_heading_vector(stroke_->direction);
+    const Eigen::Vector3d shoulder = pose.position[kRShoulder];
+    back = std::min(play.max_back, speed * play.swing_s);
+    while (back > 0.02 &&
+           (contact - line * back - shoulder).norm() > play.reach_fraction * sport_->arm_reach)
+      back -= 0.02;
+  }
   // The face's pose at time `ahead` from now: along the stroke's line, or ready.
   auto goal_at = [&](double ahead) {
     control::LimbGoal g;
     if (stroke_) {
-      // Drawn back by the swing's length, then swung through the ball at the planned speed.
-      const double speed = std::clamp(stroke_->speed, 0.0, play.max_speed);
-      // No further back than the arm reaches: a goal out of reach bends the whole swing.
-      const Eigen::Vector3d contact = court.to_heading_point(stroke_->ball_at) -
-                                      court.to_heading_vector(stroke_->normal) * face_back;
-      const Eigen::Vector3d line = court.to_heading_vector(stroke_->direction);
-      const Eigen::Vector3d shoulder = pose.position[kRShoulder];
-      double back = std::min(play.max_back, speed * play.swing_s);
-      while (back > 0.02 &&
-             (contact - line * back - shoulder).norm() > play.reach_fraction * sport_->arm_reach)
-        back -= 0.02;
       const double along = std::clamp(speed * (ahead - stroke_->time_to_hit), -back, play.follow);
       const Eigen::Vector3d face =
           stroke_->ball_at - stroke_->normal * face_back + stroke_->direction * along;

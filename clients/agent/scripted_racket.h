@@ -37,7 +37,7 @@ class ScriptedRacketPolicy : public Policy {
 
   // Where the blocks it reads lie (match_info.h).
   struct Blocks {
-    int ball = 0, ball_velocity = 0, target = 0, court_position = 0, court_heading = 0, rally = 0;
+    int ball = 0, ball_velocity = 0, court_position = 0, court_heading = 0, rally = 0;
   };
   // The stroke being played (court frame), for tests and tuning.
   struct Stroke {

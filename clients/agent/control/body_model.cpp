@@ -47,15 +47,6 @@ BodyModel BodyModel::humanoid(core::HumanoidKind kind,
   return BodyModel(spec);
 }
 
-int BodyModel::index(const std::string& name) const {
-  std::string known;
-  for (int i = 0; i < size(); ++i) {
-    if (bodies_[i].name == name) return i;
-    known += (i ? ", " : "") + bodies_[i].name;
-  }
-  throw std::invalid_argument("the body model has no body \"" + name + "\"; its bodies: " + known);
-}
-
 bool BodyModel::in_subtree(int body, int ancestor) const {
   for (int b = body; b >= 0; b = bodies_[b].parent)
     if (b == ancestor) return true;

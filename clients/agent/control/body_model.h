@@ -46,8 +46,6 @@ class BodyModel {
 
   int size() const { return static_cast<int>(bodies_.size()); }
   const ModelBody& body(int i) const { return bodies_[i]; }
-  int index(const std::string& name) const;  // throws std::invalid_argument naming the bodies
-  double total_mass() const { return total_mass_; }
   // Is `body` `ancestor` or below it in the tree?
   bool in_subtree(int body, int ancestor) const;
 

@@ -25,7 +25,6 @@ class LimbControl {
   void reset() { last_.relative.clear(); }
 
   const LimbIk& ik() const { return ik_; }
-  const LimbSolution& last() const { return last_; }
 
  private:
   const BodyModel& model_;
