@@ -37,11 +37,20 @@ LimbIk::LimbIk(const BodyModel& model, std::vector<LimbJoint> joints,
 
 void LimbIk::end_of(const BodyPose& pose, const std::vector<Eigen::Matrix3d>& relative,
                     Eigen::Vector3d& point, Eigen::Vector3d& axis) const {
+  walk(pose, relative, point, axis);
+}
+
+void LimbIk::walk(const BodyPose& pose, const std::vector<Eigen::Matrix3d>& relative,
+                  Eigen::Vector3d& point, Eigen::Vector3d& axis,
+                  std::vector<Eigen::Vector3d>* joint_pos,
+                  std::vector<Eigen::Matrix3d>* parent_rot) const {
   const int base = model_.body(joints_[0].body).parent;
   Eigen::Vector3d p = pose.position[base];
   Eigen::Matrix3d r = pose.rotation[base];
   for (size_t k = 0; k < joints_.size(); ++k) {
     p += r * model_.body(joints_[k].body).offset;
+    if (joint_pos) (*joint_pos)[k] = p;
+    if (parent_rot) (*parent_rot)[k] = r;
     r = r * relative[k];
   }
   point = p + r * end_point_;
@@ -79,7 +88,6 @@ LimbSolution LimbIk::solve(const BodyPose& pose, const LimbGoal& goal,
 LimbSolution LimbIk::descend(const BodyPose& pose, const LimbGoal& goal,
                              const std::vector<Eigen::Matrix3d>& start, int iterations) const {
   const int n = static_cast<int>(joints_.size());
-  const int base = model_.body(joints_[0].body).parent;
   std::vector<Eigen::Matrix3d> rel(n);
   for (int k = 0; k < n; ++k) {
     const int b = joints_[k].body;
@@ -100,16 +108,8 @@ LimbSolution LimbIk::descend(const BodyPose& pose, const LimbGoal& goal,
   std::vector<Eigen::Matrix3d> parent_rot(n);
   for (int it = 0; it < iterations; ++it) {
     // Forward along the limb, keeping each joint's position and its parent's rotation.
-    Eigen::Vector3d p = pose.position[base];
-    Eigen::Matrix3d r = pose.rotation[base];
-    for (int k = 0; k < n; ++k) {
-      p += r * model_.body(joints_[k].body).offset;
-      joint_pos[k] = p;
-      parent_rot[k] = r;
-      r = r * rel[k];
-    }
-    const Eigen::Vector3d end = p + r * end_point_;
-    const Eigen::Vector3d axis = r * end_axis_;
+    Eigen::Vector3d end, axis;
+    walk(pose, rel, end, axis, &joint_pos, &parent_rot);
 
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(rows, 3 * n);
     Eigen::VectorXd e = Eigen::VectorXd::Zero(rows);

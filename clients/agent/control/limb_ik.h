@@ -60,6 +60,12 @@ class LimbIk {
   static constexpr int kRestarts = 6;
   LimbSolution descend(const BodyPose& pose, const LimbGoal& goal,
                        const std::vector<Eigen::Matrix3d>& start, int iterations) const;
+  // Forward kinematics along the limb from its base as in `pose`; also each joint's position and
+  // its parent's rotation when asked.
+  void walk(const BodyPose& pose, const std::vector<Eigen::Matrix3d>& relative,
+            Eigen::Vector3d& point, Eigen::Vector3d& axis,
+            std::vector<Eigen::Vector3d>* joint_pos = nullptr,
+            std::vector<Eigen::Matrix3d>* parent_rot = nullptr) const;
 
   const BodyModel& model_;
   std::vector<LimbJoint> joints_;
