@@ -43,6 +43,28 @@ std::vector<std::string> ModeTable::names() const {
   return names;
 }
 
+LayoutBlock LayoutBlock::of(std::string name, std::string units, std::string meaning,
+                            const std::vector<FieldSize>& fields) {
+  LayoutBlock block{std::move(name), 0, std::move(units), std::move(meaning)};
+  for (const auto& f : fields) {
+    if (f.size <= 0)
+      throw std::logic_error("observation block \"" + block.name + "\": field \"" + f.name +
+                             "\" declares no floats");
+    block.fields.push_back({f.name, block.size, f.size});
+    block.size += f.size;
+  }
+  return block;
+}
+
+const LayoutField& LayoutBlock::field(const std::string& field_name) const {
+  for (const auto& f : fields)
+    if (f.name == field_name) return f;
+  std::string known;
+  for (const auto& f : fields) known += (known.empty() ? "" : ", ") + f.name;
+  throw std::invalid_argument("block \"" + name + "\" has no field \"" + field_name +
+                              "\"; its fields: " + (known.empty() ? "none" : known));
+}
+
 namespace {
 
 // Each humanoid's model, loaded once (it is read-only).

@@ -80,15 +80,30 @@ struct LayoutField {
   int size;
 };
 
+// A field as a sport declares it: its name and how many floats it holds, in block order.
+struct FieldSize {
+  std::string name;
+  int size;
+};
+
 // One named block of an observation or action vector, for `describe` and for clients, which
-// find what they need by name (the protocol carries names and sizes). `fields`, where a block
-// declares them, name its parts (the self observation's: core/self_observation_layout.h).
+// find what they need by name: the protocol carries each block's name and size, and its fields'
+// names and sizes. Every observation block declares its fields, in order, tiling the block (the
+// self observation's come from core/self_observation_layout.h, a sport's from where it declares
+// its task blocks, with of()); the ObservationWriter writes each block field by field by this
+// declaration, so what is written and what clients read cannot drift apart.
 struct LayoutBlock {
   std::string name;
   int size;
   std::string units;
   std::string meaning;
   std::vector<LayoutField> fields = {};
+
+  // A block made of `fields` in order; its size is theirs together.
+  static LayoutBlock of(std::string name, std::string units, std::string meaning,
+                        const std::vector<FieldSize>& fields);
+  // The field called `name`; throws std::invalid_argument naming the block's fields.
+  const LayoutField& field(const std::string& name) const;
 };
 
 // A reward term: reported by name to the client beside the weighted total, so a trainer can

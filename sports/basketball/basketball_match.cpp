@@ -26,25 +26,37 @@ constexpr double kReleased_s = 0.1;      // the ball untouched by the shooter th
 bool is_team_play(const std::string& mode) { return mode != "free_throw"; }
 
 std::vector<LayoutBlock> basketball_task_layout(const ModeSpec& mode) {
+  const LayoutBlock rim = LayoutBlock::of(
+      "rim", "m", "the rim's centre relative to the root, heading frame", {{"centre", 3}});
   if (!is_team_play(mode.name))
-    return {ball_observation_block(),
-            {"rim", 3, "m", "the rim's centre relative to the root, heading frame"},
-            {"target", 3, "m",
-             "the target of the desired launch velocity (above the rim) relative to the ball, "
-             "heading frame"},
-            {"throw", 2, "fraction, flag",
-             "share of the time left; 1 while the ball is still being presented, else 0"}};
+    return {ball_observation_block(), rim,
+            LayoutBlock::of("target", "m",
+                            "the target of the desired launch velocity (above the rim) relative "
+                            "to the ball, heading frame",
+                            {{"offset", 3}}),
+            LayoutBlock::of("throw", "fraction, flag",
+                            "share of the time left; 1 while the ball is still being presented, "
+                            "else 0",
+                            {{"time_left", 1}, {"presenting", 1}})};
   std::vector<LayoutBlock> blocks = {
-      ball_observation_block(),
-      {"rim", 3, "m", "the rim's centre relative to the root, heading frame"},
-      {"arc", 2, "m",
-       "how far my root and the ball are beyond the 2-point arc (negative: inside it)"}};
+      ball_observation_block(), rim,
+      LayoutBlock::of(
+          "arc", "m",
+          "how far my root and the ball are beyond the 2-point arc (negative: inside it)",
+          {{"me", 1}, {"ball", 1}})};
   append_team_blocks(mode, blocks);
-  blocks.push_back({"game", 7, "points, fraction, s, flag",
-                    "my side's points, the other side's, share of the game time left, shot clock "
-                    "left (s), possession (+1 my side, -1 the other, 0 nobody yet), the side "
-                    "with the ball has cleared it (1, else 0), the ball is being presented to me "
-                    "at a restart (1, else 0)"});
+  blocks.push_back(LayoutBlock::of(
+      "game", "points, fraction, s, flag",
+      "my side's points, the other side's, share of the game time left, shot clock left (s), "
+      "possession (+1 my side, -1 the other, 0 nobody yet), the side with the ball has cleared "
+      "it (1, else 0), the ball is being presented to me at a restart (1, else 0)",
+      {{"my_points", 1},
+       {"their_points", 1},
+       {"time_left", 1},
+       {"shot_clock", 1},
+       {"possession", 1},
+       {"cleared", 1},
+       {"presented_to_me", 1}}));
   return blocks;
 }
 
@@ -328,27 +340,38 @@ void BasketballMatch::write_task_observation(int slot, const HeadingFrame& frame
                                              ObservationWriter& out) const {
   write_ball_observation(*ball_, frame, out);
   const int attacked = team_play_ ? attacked_by(slot) : 0;
-  out.begin("rim").put(frame.point(config_.court.rim_centre(attacked)));
+  out.begin("rim").field("centre").put(frame.point(config_.court.rim_centre(attacked)));
   if (!team_play_) {
-    out.begin("target").put(frame.vector(target() - ball_->position()));
+    out.begin("target").field("offset").put(frame.vector(target() - ball_->position()));
     out.begin("throw")
+        .field("time_left")
         .put(1.0 - static_cast<double>(tick()) / time_limit_ticks())
+        .field("presenting")
         .put(presenting() ? 1.0 : 0.0);
     return;
   }
   const Court& court = config_.court;
   out.begin("arc")
+      .field("me")
       .put(court.beyond_arc(frame.root.position.head<2>(), attacked))
+      .field("ball")
       .put(court.beyond_arc(ball_->position().head<2>(), attacked));
   write_team_blocks(*this, slot, frame, out);
   const int mine = team_of(slot), with_ball = referee_.possession();
   out.begin("game")
+      .field("my_points")
       .put(referee_.score()[mine])
+      .field("their_points")
       .put(referee_.score()[1 - mine])
+      .field("time_left")
       .put(1.0 - static_cast<double>(tick()) / time_limit_ticks())
+      .field("shot_clock")
       .put(referee_.shot_clock_left(time()))
+      .field("possession")
       .put(with_ball < 0 ? 0.0 : (with_ball == mine ? 1.0 : -1.0))
+      .field("cleared")
       .put(referee_.cleared() ? 1.0 : 0.0)
+      .field("presented_to_me")
       .put(presenting() && presented_slot_ == slot ? 1.0 : 0.0);
 }
 

@@ -45,16 +45,35 @@ double bout_length_s(const BoxingRules& r) {
 
 std::vector<LayoutBlock> boxing_task_layout() {
   std::vector<LayoutBlock> blocks = combat::opponent_blocks();
-  blocks.push_back({"gloves", 12, "m, m/s",
-                    "my left then right glove (a bare hand when not gloved): position relative "
-                    "to the root (3), velocity (3), heading frame"});
-  blocks.push_back({"opponent_gloves", 12, "m, m/s", "the opponent's gloves, likewise"});
-  blocks.push_back({"ring", 6, "m",
-                    "root x, y in the ring from my side (towards the opponent's side, left), "
-                    "distances to the ropes ahead, behind, left and right"});
-  blocks.push_back({"bout", 7, "count, fraction, flag, count, count, s, s",
-                    "round, share of the round (or rest) left, resting, my and the opponent's "
-                    "scoring punches this round, how long I and the opponent have been down"});
+  const std::vector<FieldSize> gloves = {
+      {"left_position", 3}, {"left_velocity", 3}, {"right_position", 3}, {"right_velocity", 3}};
+  blocks.push_back(LayoutBlock::of("gloves", "m, m/s",
+                                   "my left then right glove (a bare hand when not gloved): "
+                                   "position relative to the root (3), velocity (3), heading frame",
+                                   gloves));
+  blocks.push_back(
+      LayoutBlock::of("opponent_gloves", "m, m/s", "the opponent's gloves, likewise", gloves));
+  blocks.push_back(LayoutBlock::of("ring", "m",
+                                   "root x, y in the ring from my side (towards the opponent's "
+                                   "side, left), distances to the ropes ahead, behind, left and "
+                                   "right",
+                                   {{"x", 1},
+                                    {"y", 1},
+                                    {"to_ropes_ahead", 1},
+                                    {"to_ropes_behind", 1},
+                                    {"to_ropes_left", 1},
+                                    {"to_ropes_right", 1}}));
+  blocks.push_back(LayoutBlock::of("bout", "count, fraction, flag, count, count, s, s",
+                                   "round, share of the round (or rest) left, resting, my and the "
+                                   "opponent's scoring punches this round, how long I and the "
+                                   "opponent have been down",
+                                   {{"round", 1},
+                                    {"time_left", 1},
+                                    {"resting", 1},
+                                    {"my_punches", 1},
+                                    {"their_punches", 1},
+                                    {"my_down_s", 1},
+                                    {"their_down_s", 1}}));
   return blocks;
 }
 
@@ -185,22 +204,42 @@ void BoxingMatch::write_task_observation(int slot, const HeadingFrame& frame,
     out.begin(block);
     for (int h = 0; h < 2; ++h) {
       const auto g = combat::point_on_body(player(who).body_state(hands_[h]), glove_centre_[h]);
-      out.put(frame.point(g.position)).put(frame.vector(g.velocity));
+      out.field(h == 0 ? "left_position" : "right_position").put(frame.point(g.position));
+      out.field(h == 0 ? "left_velocity" : "right_velocity").put(frame.vector(g.velocity));
     }
   }
   const double side = -combat::side(slot);  // +1: my side is -x
   const double x = frame.root.position.x() * side, y = frame.root.position.y() * side;
   const double half = config_.ring.half();
-  out.begin("ring").put(x).put(y).put(half - x).put(half + x).put(half - y).put(half + y);
+  out.begin("ring")
+      .field("x")
+      .put(x)
+      .field("y")
+      .put(y)
+      .field("to_ropes_ahead")
+      .put(half - x)
+      .field("to_ropes_behind")
+      .put(half + x)
+      .field("to_ropes_left")
+      .put(half - y)
+      .field("to_ropes_right")
+      .put(half + y);
   const auto& p = referee_.punches_this_round();
   const double length = referee_.resting() ? config_.rules.rest_s : config_.rules.round_s;
   out.begin("bout")
+      .field("round")
       .put(referee_.round())
+      .field("time_left")
       .put(length > 0 ? referee_.phase_time_left(time()) / length : 0.0)
+      .field("resting")
       .put(referee_.resting() ? 1.0 : 0.0)
+      .field("my_punches")
       .put(p[slot])
+      .field("their_punches")
       .put(p[other])
+      .field("my_down_s")
       .put(referee_.down_for(slot, time()))
+      .field("their_down_s")
       .put(referee_.down_for(other, time()));
 }
 

@@ -40,6 +40,9 @@ struct SelfObservationLayout {
   // origin).
   constexpr int body_position(int body) const { return body_positions() + 3 * (body - 1); }
   constexpr int body_rotation(int body) const { return body_rotations() + 6 * body; }
+  // A body's rotation is its x axis (3) then its z axis (3).
+  constexpr int body_x_axis(int body) const { return body_rotation(body); }
+  constexpr int body_z_axis(int body) const { return body_rotation(body) + 3; }
   constexpr int linear_velocity(int body) const { return linear_velocities() + 3 * body; }
   constexpr int angular_velocity(int body) const { return angular_velocities() + 3 * body; }
 

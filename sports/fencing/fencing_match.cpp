@@ -27,15 +27,21 @@ const core::ModelSpec& fencer_model() {
 
 std::vector<LayoutBlock> fencing_task_layout() {
   std::vector<LayoutBlock> blocks = combat::opponent_blocks();
-  blocks.push_back({"tip", 6, "m, m/s",
-                    "my épée's tip: position relative to the root (3), velocity (3), heading "
-                    "frame"});
-  blocks.push_back({"opponent_tip", 6, "m, m/s", "the opponent's épée's tip, likewise"});
-  blocks.push_back({"piste", 4, "m",
-                    "root along the piste towards the opponent's end and across it (left "
-                    "positive), from my side; distances to my end and to the opponent's end"});
-  blocks.push_back({"bout", 3, "touches, fraction",
-                    "my touches, the opponent's touches, share of the bout's time left"});
+  const std::vector<FieldSize> tip = {{"position", 3}, {"velocity", 3}};
+  blocks.push_back(LayoutBlock::of(
+      "tip", "m, m/s",
+      "my épée's tip: position relative to the root (3), velocity (3), heading frame", tip));
+  blocks.push_back(
+      LayoutBlock::of("opponent_tip", "m, m/s", "the opponent's épée's tip, likewise", tip));
+  blocks.push_back(LayoutBlock::of(
+      "piste", "m",
+      "root along the piste towards the opponent's end and across it (left positive), from my "
+      "side; distances to my end and to the opponent's end",
+      {{"along", 1}, {"across", 1}, {"to_my_end", 1}, {"to_their_end", 1}}));
+  blocks.push_back(
+      LayoutBlock::of("bout", "touches, fraction",
+                      "my touches, the opponent's touches, share of the bout's time left",
+                      {{"my_touches", 1}, {"their_touches", 1}, {"time_left", 1}}));
   return blocks;
 }
 
@@ -172,15 +178,32 @@ void FencingMatch::write_task_observation(int slot, const HeadingFrame& frame,
   combat::write_opponent_blocks(frame, player(other), targets_, out);
   for (const auto& [block, who] : {std::pair{"tip", slot}, std::pair{"opponent_tip", other}}) {
     const auto tip = combat::point_on_body(player(who).body_state(hand_body_), kTipInHand);
-    out.begin(block).put(frame.point(tip.position)).put(frame.vector(tip.velocity));
+    out.begin(block)
+        .field("position")
+        .put(frame.point(tip.position))
+        .field("velocity")
+        .put(frame.vector(tip.velocity));
   }
   const double side = -combat::side(slot);  // +1: my end is at -x
   const double along = frame.root.position.x() * side, across = frame.root.position.y() * side;
   const double half = config_.piste.length / 2;
-  out.begin("piste").put(along).put(across).put(along + half).put(half - along);
+  out.begin("piste")
+      .field("along")
+      .put(along)
+      .field("across")
+      .put(across)
+      .field("to_my_end")
+      .put(along + half)
+      .field("to_their_end")
+      .put(half - along);
   const auto& s = referee_.score();
-  out.begin("bout").put(s[slot]).put(s[other]).put(1.0 - static_cast<double>(tick()) /
-                                                             time_limit_ticks());
+  out.begin("bout")
+      .field("my_touches")
+      .put(s[slot])
+      .field("their_touches")
+      .put(s[other])
+      .field("time_left")
+      .put(1.0 - static_cast<double>(tick()) / time_limit_ticks());
 }
 
 }  // namespace olympics::sports::fencing

@@ -12,15 +12,20 @@ namespace olympics::sports {
 inline constexpr double kBallSpinLimit = 100;  // rad/s, observation clamp
 
 inline LayoutBlock ball_observation_block() {
-  return {"ball", 9, "m, m/s, rad/s",
-          "the ball's centre relative to the root (3), velocity (3), spin (3), heading frame"};
+  return LayoutBlock::of(
+      "ball", "m, m/s, rad/s",
+      "the ball's centre relative to the root (3), velocity (3), spin (3), heading frame",
+      {{"position", 3}, {"velocity", 3}, {"spin", 3}});
 }
 
 inline void write_ball_observation(const equipment::Ball& ball, const HeadingFrame& frame,
                                    ObservationWriter& out) {
   out.begin("ball")
+      .field("position")
       .put(frame.point(ball.position()))
+      .field("velocity")
       .put(frame.vector(ball.velocity()))
+      .field("spin")
       .put_clamped(frame.vector(ball.angular_velocity()), kBallSpinLimit);
 }
 

@@ -33,6 +33,26 @@ ObservationWriter& ObservationWriter::begin(std::string_view name) {
                                 : std::string("no block")) +
                            " is declared");
   written_ = 0;
+  field_ = -1;
+  field_written_ = 0;
+  return *this;
+}
+
+ObservationWriter& ObservationWriter::field(std::string_view name) {
+  if (block_ < 0) throw std::logic_error("observation field written before any block began");
+  const LayoutBlock& block = blocks_[block_];
+  if (field_ >= 0 && field_written_ != block.fields[field_].size)
+    throw std::logic_error("observation field \"" + block.name + "." + block.fields[field_].name +
+                           "\" declares " + std::to_string(block.fields[field_].size) +
+                           " floats, " + std::to_string(field_written_) + " were written");
+  ++field_;
+  if (field_ >= static_cast<int>(block.fields.size()) || block.fields[field_].name != name)
+    throw std::logic_error(
+        "observation field \"" + block.name + "." + std::string(name) + "\" written where " +
+        (field_ < static_cast<int>(block.fields.size()) ? "\"" + block.fields[field_].name + "\""
+                                                        : std::string("no field")) +
+        " is declared");
+  field_written_ = 0;
   return *this;
 }
 
@@ -42,6 +62,18 @@ float* ObservationWriter::next(int count) {
                                       : "observation block \"" + blocks_[block_].name +
                                             "\" overfilled: it declares " +
                                             std::to_string(blocks_[block_].size) + " floats");
+  const LayoutBlock& block = blocks_[block_];
+  if (!block.fields.empty()) {
+    if (field_ < 0)
+      throw std::logic_error("observation block \"" + block.name +
+                             "\" written outside its fields: begin its field \"" +
+                             block.fields.front().name + "\" first");
+    if (field_written_ + count > block.fields[field_].size)
+      throw std::logic_error("observation field \"" + block.name + "." + block.fields[field_].name +
+                             "\" overfilled: it declares " +
+                             std::to_string(block.fields[field_].size) + " floats");
+    field_written_ += count;
+  }
   float* at = out_.data() + offset_ + written_;
   written_ += count;
   return at;
@@ -75,7 +107,9 @@ std::span<float> ObservationWriter::whole_block() {
   const int size = blocks_[block_].size;
   if (written_ != 0)
     throw std::logic_error("observation block \"" + blocks_[block_].name + "\" already begun");
-  return {next(size), static_cast<size_t>(size)};
+  float* at = out_.data() + offset_;
+  written_ = size;
+  return {at, static_cast<size_t>(size)};
 }
 
 void ObservationWriter::finish() const {

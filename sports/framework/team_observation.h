@@ -12,7 +12,8 @@
 namespace olympics::sports {
 
 // Appends "teammates" (when the mode has any) and "opponents" (when it has any): each other
-// player's root position (3) and velocity (3), heading frame, in slot order.
+// player's root position (3) and velocity (3), heading frame, in slot order (fields position_0,
+// velocity_0, position_1, ...: the k-th other player of the block).
 void append_team_blocks(const ModeSpec& mode, std::vector<LayoutBlock>& blocks);
 // Writes the blocks append_team_blocks added for the match's mode, seen from `slot`.
 void write_team_blocks(const SmplMatch& match, int slot, const HeadingFrame& frame,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "core/humanoid_assets.h"
 #include "equipment/landing.h"
@@ -14,6 +15,8 @@ namespace olympics::sports::racket {
 namespace {
 
 constexpr int kPerOther = 3;
+// The field of the k-th other player in the block "others": its root position.
+std::string other_field(int k) { return "position_" + std::to_string(k); }
 
 // The SMPL humanoid holding this equipment; built once per kind of equipment.
 const core::ModelSpec& equipped_humanoid(const equipment::EquipmentSpec& equipment) {
@@ -41,24 +44,37 @@ int member_index(const std::vector<int>& teams, int slot) {
 
 std::vector<LayoutBlock> racket_task_layout(int slots) {
   std::vector<LayoutBlock> blocks = {
-      {"ball_position", 3, "m", "ball centre relative to the root, heading frame"},
-      {"ball_velocity", 3, "m/s", "ball velocity, heading frame"},
-      {"racket_position", 3, "m", "racket/paddle face centre relative to the root, heading frame"},
-      {"racket_normal", 3, "unit", "face normal (the hand's z axis), heading frame"},
-      {"target", 3, "m", "where this player's next stroke should land, relative to the root"},
-      {"landing", 3, "m", "the ball's predicted landing (eq. 6), relative to the root"},
-      {"court_position", 2, "m",
-       "root x, y in court coordinates seen from this side (own "
-       "baseline at negative x, net at x = 0)"},
-      {"court_heading", 2, "cos, sin", "heading relative to facing the net"},
-      {"rally", 4, "flags / count",
-       "struck (C), ball coming to my team, bounces on the "
-       "receiver's side since the last stroke, touched the net"},
+      LayoutBlock::of("ball_position", "m", "ball centre relative to the root, heading frame",
+                      {{"position", 3}}),
+      LayoutBlock::of("ball_velocity", "m/s", "ball velocity, heading frame", {{"velocity", 3}}),
+      LayoutBlock::of("racket_position", "m",
+                      "racket/paddle face centre relative to the root, heading frame",
+                      {{"position", 3}}),
+      LayoutBlock::of("racket_normal", "unit", "face normal (the hand's z axis), heading frame",
+                      {{"normal", 3}}),
+      LayoutBlock::of("target", "m",
+                      "where this player's next stroke should land, relative to the root",
+                      {{"position", 3}}),
+      LayoutBlock::of("landing", "m", "the ball's predicted landing (eq. 6), relative to the root",
+                      {{"position", 3}}),
+      LayoutBlock::of("court_position", "m",
+                      "root x, y in court coordinates seen from this side (own baseline at "
+                      "negative x, net at x = 0)",
+                      {{"x", 1}, {"y", 1}}),
+      LayoutBlock::of("court_heading", "cos, sin", "heading relative to facing the net",
+                      {{"cos", 1}, {"sin", 1}}),
+      LayoutBlock::of("rally", "flags / count",
+                      "struck (C), ball coming to my team, bounces on the receiver's side since "
+                      "the last stroke, touched the net",
+                      {{"struck", 1}, {"coming", 1}, {"bounces", 1}, {"netted", 1}}),
   };
-  if (slots > 1)
-    blocks.push_back({"others", kPerOther * (slots - 1), "m",
-                      "per other slot in slot order: root position relative to the root, heading "
-                      "frame"});
+  if (slots > 1) {
+    std::vector<FieldSize> others;
+    for (int k = 0; k + 1 < slots; ++k) others.push_back({other_field(k), kPerOther});
+    blocks.push_back(LayoutBlock::of(
+        "others", "m",
+        "per other slot in slot order: root position relative to the root, heading frame", others));
+  }
   return blocks;
 }
 
@@ -302,27 +318,37 @@ void RacketMatch::write_task_observation(int slot, const HeadingFrame& frame,
   const equipment::Pose racket = racket_pose(slot);
   const Eigen::Vector2d land =
       equipment::predict_landing(flight_.position(), flight_.velocity(), g.surface_height);
-  out.begin("ball_position").put(frame.point(flight_.position()));
-  out.begin("ball_velocity").put(frame.vector(flight_.velocity()));
-  out.begin("racket_position").put(frame.point(racket.position));
-  out.begin("racket_normal").put(frame.vector(racket.orientation * Eigen::Vector3d::UnitZ()));
-  out.begin("target").put(frame.point({target_[slot].x(), target_[slot].y(), g.surface_height}));
-  out.begin("landing").put(frame.point({land.x(), land.y(), g.surface_height}));
+  out.begin("ball_position").field("position").put(frame.point(flight_.position()));
+  out.begin("ball_velocity").field("velocity").put(frame.vector(flight_.velocity()));
+  out.begin("racket_position").field("position").put(frame.point(racket.position));
+  out.begin("racket_normal")
+      .field("normal")
+      .put(frame.vector(racket.orientation * Eigen::Vector3d::UnitZ()));
+  out.begin("target")
+      .field("position")
+      .put(frame.point({target_[slot].x(), target_[slot].y(), g.surface_height}));
+  out.begin("landing").field("position").put(frame.point({land.x(), land.y(), g.surface_height}));
   const double side = -RacketGame::side_sign(teams()[slot]);  // +1 for team 0
   const Eigen::Vector3d& root = frame.root.position;
-  out.begin("court_position").put(root.x() * side).put(root.y() * side);
+  out.begin("court_position").field("x").put(root.x() * side).field("y").put(root.y() * side);
   const Eigen::Vector3d forward = frame.root.orientation * Eigen::Vector3d::UnitX();
   const double yaw = std::atan2(forward.y(), forward.x()) - (side > 0 ? 0.0 : M_PI);
-  out.begin("court_heading").put(std::cos(yaw)).put(std::sin(yaw));
+  out.begin("court_heading").field("cos").put(std::cos(yaw)).field("sin").put(std::sin(yaw));
   out.begin("rally")
+      .field("struck")
       .put(struck_[slot] ? 1.0 : 0.0)
+      .field("coming")
       .put(referee_.receiver_team() == teams()[slot] ? 1.0 : 0.0)
+      .field("bounces")
       .put(referee_.bounces())
+      .field("netted")
       .put(referee_.netted() ? 1.0 : 0.0);
   if (slot_count() == 1) return;
   out.begin("others");
+  int k = 0;
   for (int other = 0; other < slot_count(); ++other)
-    if (other != slot) out.put(frame.point(player(other).body_state(0).position));
+    if (other != slot)
+      out.field(other_field(k++)).put(frame.point(player(other).body_state(0).position));
 }
 
 void RacketMatch::extra_state(std::vector<double>& values) const {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <random>
+#include <string>
+#include <utility>
 
 #include "core/humanoid_assets.h"
 #include "core/self_observation.h"
@@ -9,7 +11,16 @@
 namespace olympics::sports {
 namespace {
 
-constexpr int kPerOther = 7;
+// What the block "others" holds of each other slot: root position, root velocity, fallen.
+constexpr std::pair<const char*, int> kOtherFields[] = {
+    {"position", 3}, {"velocity", 3}, {"fallen", 1}};
+// The field `what` of the k-th other slot ("position_0", ...).
+std::string other_field(const char* what, int k) {
+  std::string name = what;
+  name += '_';
+  name += std::to_string(k);
+  return name;
+}
 
 const core::ModelSpec& smpl() {
   static const core::ModelSpec spec = core::load_humanoid(core::HumanoidKind::Smpl);
@@ -34,12 +45,18 @@ std::unique_ptr<SportMatch> SandboxSport::create(const MatchSettings& settings) 
 
 Layout SandboxSport::layout(const std::string& mode) const {
   const int others = modes_.at(mode).slot_count() - 1;
-  std::vector<LayoutBlock> task = {
-      {"time_remaining", 1, "fraction", "share of the time limit still to play"}};
+  std::vector<LayoutBlock> task = {LayoutBlock::of(
+      "time_remaining", "fraction", "share of the time limit still to play", {{"fraction", 1}})};
+  std::vector<FieldSize> per_other;
+  for (int k = 0; k < others; ++k)
+    for (const auto& [field, size] : kOtherFields)
+      per_other.push_back({other_field(field, k), size});
   if (others > 0)
-    task.push_back({"others", kPerOther * others, "m, m/s, flag",
-                    "per other slot in slot order: root position (3) and root velocity (3) in "
-                    "this humanoid's heading frame, clamped to +-5; fallen (1)"});
+    task.push_back(LayoutBlock::of("others", "m, m/s, flag",
+                                   "per other slot in slot order: root position (3) and root "
+                                   "velocity (3) in this humanoid's heading frame, clamped to "
+                                   "+-5; fallen (1)",
+                                   per_other));
   return smpl_layout(task,
                      {{"alive", 1.0, "+1 each tick while standing"},
                       {"fall", 1.0, "-1 on the tick the humanoid falls"}},
@@ -65,15 +82,21 @@ SandboxMatch::SandboxMatch(const ModeSpec& mode, Layout layout, const MatchSetti
 void SandboxMatch::write_task_observation(int slot, const HeadingFrame& frame,
                                           ObservationWriter& out) const {
   out.begin("time_remaining")
+      .field("fraction")
       .put(1.0f - static_cast<float>(tick()) / static_cast<float>(time_limit_ticks()));
   if (slot_count() == 1) return;
   out.begin("others");
+  int k = 0;
   for (int other = 0; other < slot_count(); ++other) {
     if (other == slot) continue;
     const core::BodyState o = player(other).body_state(0);
-    out.put_clamped(frame.point(o.position), core::kObservationClamp)
+    out.field(other_field("position", k))
+        .put_clamped(frame.point(o.position), core::kObservationClamp)
+        .field(other_field("velocity", k))
         .put_clamped(frame.vector(o.linear_velocity), core::kObservationClamp)
+        .field(other_field("fallen", k))
         .put(fallen_[other] ? 1.0 : 0.0);
+    ++k;
   }
 }
 

@@ -31,17 +31,20 @@ SoccerMode soccer_mode(const std::string& mode) {
 std::vector<LayoutBlock> soccer_task_layout(const ModeSpec& mode) {
   std::vector<LayoutBlock> blocks = {
       ball_observation_block(),
-      {"goals", 6, "m",
-       "the centre of the goal I attack (3) and of the goal I defend (3), at half the goal's "
-       "height, relative to the root, heading frame"},
-      {"field", 4, "m, cos, sin",
-       "my root from the centre spot along my attack direction and across it (left positive); "
-       "my heading relative to the attack direction (cos, sin)"}};
+      LayoutBlock::of("goals", "m",
+                      "the centre of the goal I attack (3) and of the goal I defend (3), at half "
+                      "the goal's height, relative to the root, heading frame",
+                      {{"attack", 3}, {"defend", 3}}),
+      LayoutBlock::of("field", "m, cos, sin",
+                      "my root from the centre spot along my attack direction and across it (left "
+                      "positive); my heading relative to the attack direction (cos, sin)",
+                      {{"along", 1}, {"across", 1}, {"heading_cos", 1}, {"heading_sin", 1}})};
   append_team_blocks(mode, blocks);
-  blocks.push_back({"match", 5, "goals, fraction, flag, half",
-                    "my side's goals, the other side's goals, share of the match time left, the "
-                    "restart being waited for (+1 mine to take, -1 theirs, 0 ball in play), the "
-                    "half (0, 1)"});
+  blocks.push_back(LayoutBlock::of(
+      "match", "goals, fraction, flag, half",
+      "my side's goals, the other side's goals, share of the match time left, the restart being "
+      "waited for (+1 mine to take, -1 theirs, 0 ball in play), the half (0, 1)",
+      {{"my_goals", 1}, {"their_goals", 1}, {"time_left", 1}, {"restart", 1}, {"half", 1}}));
   return blocks;
 }
 
@@ -299,14 +302,20 @@ void SoccerMatch::write_task_observation(int slot, const HeadingFrame& frame,
   const int d = attack(slot);
   write_ball_observation(*ball_, frame, out);
   out.begin("goals")
+      .field("attack")
       .put(frame.point(config_.field.goal_centre(d)))
+      .field("defend")
       .put(frame.point(config_.field.goal_centre(-d)));
   const Eigen::Vector3d& root = frame.root.position;
   const double relative = core::heading_angle(frame.root.orientation) - (d > 0 ? 0.0 : M_PI);
   out.begin("field")
+      .field("along")
       .put(d * root.x())
+      .field("across")
       .put(d * root.y())
+      .field("heading_cos")
       .put(std::cos(relative))
+      .field("heading_sin")
       .put(std::sin(relative));
   write_team_blocks(*this, slot, frame, out);
   const int mine = team_of(slot);
@@ -315,10 +324,15 @@ void SoccerMatch::write_task_observation(int slot, const HeadingFrame& frame,
   if (const auto& p = referee_.pending(); p && kind_ == SoccerMode::TeamPlay)
     restart = p->team == mine ? 1 : -1;
   out.begin("match")
+      .field("my_goals")
       .put(outcome_.scores[mine])
+      .field("their_goals")
       .put(theirs_score)
+      .field("time_left")
       .put(1.0 - static_cast<double>(tick()) / time_limit_ticks())
+      .field("restart")
       .put(restart)
+      .field("half")
       .put(kind_ == SoccerMode::TeamPlay ? referee_.half() : 0);
 }
 
