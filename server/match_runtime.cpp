@@ -54,8 +54,14 @@ MatchRuntime::MatchRuntime(MatchIdentity identity, RuntimeSettings settings,
   for (const auto& block : game_->layout().observation) {
     d.obs_block_names.push_back(block.name);
     d.obs_block_sizes.push_back(block.size);
+    d.obs_block_field_counts.push_back(static_cast<int>(block.fields.size()));
+    for (const auto& field : block.fields) {
+      d.obs_field_names.push_back(field.name);
+      d.obs_field_sizes.push_back(field.size);
+    }
   }
   d.num_obs_blocks = static_cast<int>(d.obs_block_names.size());
+  d.num_obs_fields = static_cast<int>(d.obs_field_names.size());
   slot_owner_.assign(n, -1);
   current_.assign(n, std::vector<float>(game_->action_size(), 0.0f));
   pending_ = current_;

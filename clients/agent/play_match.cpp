@@ -12,8 +12,7 @@ namespace olympics::client {
 MatchInfo match_info(const olympics::match_created_t& m) {
   if (m.control_hz <= 0)
     throw std::invalid_argument("the server sent no control rate; upgrade it to protocol 3");
-  return {m.sport, m.mode, 1.0 / m.control_hz,
-          ObservationLayout(m.obs_block_names, m.obs_block_sizes), m.action_size};
+  return {m.sport, m.mode, 1.0 / m.control_hz, ObservationLayout::from_message(m), m.action_size};
 }
 
 const olympics::match_result_t& play_joined_match(MatchClient& client, const PlayOptions& o) {

@@ -10,6 +10,7 @@
 
 #include "bundle.h"
 #include "channels.h"
+#include "observation_layout.h"
 #include "olympics/join_reply_t.hpp"
 #include "olympics/join_t.hpp"
 #include "olympics/league_assignment_t.hpp"
@@ -28,12 +29,20 @@ std::string random_id() {
   return buf;
 }
 
-// A match description a policy can rely on: the blocks add up to the observation, sizes are sane.
+// A match description a policy can rely on: the blocks add up to the observation, each block's
+// fields to the block, sizes are sane.
 bool described_consistently(const olympics::match_created_t& m) {
   long blocks = 0;
   for (int size : m.obs_block_sizes) blocks += size;
-  return m.obs_size > 0 && m.obs_size <= 1'000'000 && blocks == m.obs_size && m.action_size > 0 &&
-         m.action_size <= 100'000 && m.control_hz > 0;
+  if (!(m.obs_size > 0 && m.obs_size <= 1'000'000 && blocks == m.obs_size && m.action_size > 0 &&
+        m.action_size <= 100'000 && m.control_hz > 0))
+    return false;
+  try {
+    ObservationLayout::from_message(m);
+    return true;
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
 }
 
 template <typename T>

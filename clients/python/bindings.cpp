@@ -41,6 +41,16 @@ py::dict describe(const olympics::match_created_t& m) {
   for (int i = 0; i < m.num_obs_blocks; ++i)
     blocks.append(py::make_tuple(m.obs_block_names[i], m.obs_block_sizes[i]));
   d["obs_blocks"] = blocks;
+  // Each block's fields in order, (name, size) each, tiling the block (version 6).
+  py::list fields;
+  size_t next = 0;
+  for (int i = 0; i < m.num_obs_blocks; ++i) {
+    py::list block;
+    for (int f = 0; f < m.obs_block_field_counts[i] && next < m.obs_field_names.size(); ++f, ++next)
+      block.append(py::make_tuple(m.obs_field_names[next], m.obs_field_sizes[next]));
+    fields.append(block);
+  }
+  d["obs_fields"] = fields;
   return d;
 }
 

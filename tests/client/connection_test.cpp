@@ -35,6 +35,10 @@ olympics::match_created_t sandbox_match(const std::string& match_id) {
   m.num_obs_blocks = 1;
   m.obs_block_names = {"all"};
   m.obs_block_sizes = {3};
+  m.obs_block_field_counts = {2};
+  m.num_obs_fields = 2;
+  m.obs_field_names = {"height", "speed"};
+  m.obs_field_sizes = {1, 2};
   return m;
 }
 

@@ -113,6 +113,8 @@ extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
     oly::join_reply_t r;
     r.match.num_slots = 2, r.match.slot_team = {0, 1}, r.match.num_obs_blocks = 1;
     r.match.obs_block_names = {"self"}, r.match.obs_block_sizes = {358};
+    r.match.obs_block_field_counts = {2}, r.match.num_obs_fields = 2;
+    r.match.obs_field_names = {"root_height", "rest"}, r.match.obs_field_sizes = {1, 357};
     write_seed(dir, 3, r);
     oly::join_t j;
     j.num_slots = 1, j.slots = {0};

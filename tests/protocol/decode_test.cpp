@@ -39,6 +39,10 @@ olympics::join_reply_t sample_reply() {
   r.match.num_obs_blocks = 2;
   r.match.obs_block_names = {"self", "tip"};
   r.match.obs_block_sizes = {358, 6};
+  r.match.obs_block_field_counts = {0, 2};
+  r.match.num_obs_fields = 2;
+  r.match.obs_field_names = {"position", "velocity"};
+  r.match.obs_field_sizes = {3, 3};
   r.match.options = "{}";
   return r;
 }
@@ -67,6 +71,7 @@ TEST(Decode, WellFormedMessagesDecode) {
   auto r = decode<olympics::join_reply_t>(reply.data(), static_cast<int>(reply.size()));
   ASSERT_TRUE(r);
   EXPECT_EQ(r->match.obs_block_names[1], "tip");
+  EXPECT_EQ(r->match.obs_field_names, (std::vector<std::string>{"position", "velocity"}));
 }
 
 TEST(Decode, ZeroOrNegativeStringLengthsAreRefused) {
