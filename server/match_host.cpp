@@ -243,8 +243,10 @@ void MatchHost::on_request(const std::uint8_t* data, int size) {
   }
   if (!req->server_id.empty() && req->server_id != settings_.server_id) return;
   if (req->server_id.empty() && !should_take_unaddressed_request()) return;
+  // Named by its request id, so that the requesting client (of any version: error_t has not
+  // changed) reports it instead of waiting for an answer.
   if (auto v = protocol::version_mismatch(req->protocol_version))
-    return error("", "", "UPGRADE", *v);
+    return error("", "", "UPGRADE", "request " + req->request_id + ": " + *v);
   {
     std::lock_guard lock(routes_mutex_);
     if (auto it = requests_.find(req->request_id);
