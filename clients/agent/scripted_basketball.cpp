@@ -106,8 +106,8 @@ void ScriptedBasketballPolicy::start(const MatchInfo& match) {
         "the scripted basketball policy shoots free throws (basketball "
         "free_throw), not " +
         match.sport + " " + match.mode);
-  ball_ = match.observation.offset("ball");
-  rim_ = match.observation.offset("rim");
+  ball_ = match.observation.offset("ball", "position");
+  rim_ = match.observation.offset("rim", "centre");
   aim_ = {};
   aimed_ = false;
   control_dt_ = match.control_dt;

@@ -23,8 +23,6 @@ constexpr double kGuardElbow = 1.8;    // rad
 constexpr double kGuardForward = 0.6;  // the guard's upper arm: forward, out and down
 constexpr double kPunchEvery_s = 0.6;  // a punch, then the other hand
 constexpr double kPunchFor_s = 0.25;   // the arm out, then back to the guard
-constexpr int kChestTarget = 3,
-              kHeadTarget = 4;  // opponent_targets: pelvis, torso, spine, chest, head
 
 void guard(std::span<const float> o, std::span<float> a, Arm arm) {
   const double side = arm == Arm::Right ? -1 : 1;
@@ -45,7 +43,8 @@ void ScriptedBoxingPolicy::start(const MatchInfo& match) {
   if (match.sport != "boxing")
     throw std::invalid_argument("the scripted boxing policy plays boxing, not " + match.sport);
   const ObservationLayout& l = match.observation;
-  blocks_ = {l.offset("opponent_root"), l.offset("opponent_targets"), l.offset("bout")};
+  blocks_ = {l.offset("opponent_root", "position"), l.offset("opponent_targets", "chest"),
+             l.offset("opponent_targets", "head"), l.offset("bout", "resting")};
   control_dt_ = match.control_dt;
   StepGains gains;
   gains.turn_start = 0.3;  // keep facing the opponent, stepping in place if need be
@@ -61,8 +60,8 @@ void ScriptedBoxingPolicy::act(std::span<const float> o, std::span<float> a) {
     throw std::invalid_argument("the scripted boxing policy drives the SMPL humanoid (69 actions)");
   std::fill(a.begin(), a.end(), 0.0f);
   const Blocks& at = blocks_;
-  const bool resting = o[at.bout + 2] > 0.5;
-  const Eigen::Vector3d opponent = vec3(o, at.opponent_root);
+  const bool resting = o[at.resting] > 0.5;
+  const Eigen::Vector3d opponent = vec3(o, at.opponent);
   const Eigen::Vector2d line = opponent.head<2>();
   const double distance = line.norm();
   const Eigen::Vector2d towards =
@@ -85,8 +84,7 @@ void ScriptedBoxingPolicy::act(std::span<const float> o, std::span<float> a) {
   const int n = static_cast<int>(clock_s_ / kPunchEvery_s);
   if (into > kPunchFor_s) return;
   const Arm arm = n % 2 == 0 ? Arm::Left : Arm::Right;
-  const Eigen::Vector3d target =
-      vec3(o, at.opponent_targets + 3 * (n % 4 < 2 ? kHeadTarget : kChestTarget));
+  const Eigen::Vector3d target = vec3(o, n % 4 < 2 ? at.head : at.chest);
   punch(o, a, arm, target);
 }
 

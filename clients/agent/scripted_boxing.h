@@ -21,8 +21,8 @@ class ScriptedBoxingPolicy : public Policy {
   void act(std::span<const float> observation, std::span<float> action) override;
 
  private:
-  struct Blocks {
-    int opponent_root = 0, opponent_targets = 0, bout = 0;
+  struct Blocks {  // where the observation's fields it reads start
+    int opponent = 0, chest = 0, head = 0, resting = 0;
   };
   Blocks blocks_;
   double control_dt_ = 0;

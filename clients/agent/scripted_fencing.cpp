@@ -18,7 +18,6 @@ constexpr double kLunge_m = 1.25;      // root to root while attacking: the tip 
 constexpr double kAttack_s = 1.2;      // longest attack before falling back
 constexpr double kRecover_s = 0.8;
 constexpr double kArmRate = 2.0;  // rad/s the épée arm turns at (faster spins the body)
-constexpr int kChestTarget = 3;   // opponent_targets: pelvis, torso, spine, chest, head
 
 }  // namespace
 
@@ -26,8 +25,8 @@ void ScriptedFencingPolicy::start(const MatchInfo& match) {
   if (match.sport != "fencing")
     throw std::invalid_argument("the scripted fencing policy plays fencing, not " + match.sport);
   const ObservationLayout& l = match.observation;
-  blocks_ = {l.offset("opponent_root"), l.offset("opponent_targets"), l.offset("tip"),
-             l.offset("piste")};
+  blocks_ = {l.offset("opponent_root", "position"), l.offset("opponent_targets", "chest"),
+             l.offset("piste", "to_my_end")};
   control_dt_ = match.control_dt;
   StepGains gains;
   gains.turn_start = 0.3;  // keep facing the opponent, stepping in place if need be
@@ -44,8 +43,8 @@ void ScriptedFencingPolicy::act(std::span<const float> o, std::span<float> a) {
         "the scripted fencing policy drives the SMPL humanoid (69 actions)");
   std::fill(a.begin(), a.end(), 0.0f);
   const Blocks& at = blocks_;
-  const Eigen::Vector3d opponent = vec3(o, at.opponent_root);
-  const Eigen::Vector3d chest = vec3(o, at.opponent_targets + 3 * kChestTarget);
+  const Eigen::Vector3d opponent = vec3(o, at.opponent);
+  const Eigen::Vector3d chest = vec3(o, at.chest);
   const Eigen::Vector2d line = opponent.head<2>();
   const double distance = line.norm();
   const Eigen::Vector2d towards =
@@ -64,7 +63,7 @@ void ScriptedFencingPolicy::act(std::span<const float> o, std::span<float> a) {
       break;
   }
   double keep = phase_ == Phase::Attack ? kLunge_m - 0.3 : kOutOfReach_m;
-  const double to_my_end = o[at.piste + 2];
+  const double to_my_end = o[at.to_my_end];
   if (phase_ != Phase::Attack && to_my_end < 1.5) keep = std::min(keep, distance);  // no room
   const Eigen::Vector2d walk_to = line - towards * keep;
   legs_->act(o, walk_to, std::atan2(line.y(), line.x()), a);

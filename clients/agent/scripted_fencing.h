@@ -23,8 +23,8 @@ class ScriptedFencingPolicy : public Policy {
   void act(std::span<const float> observation, std::span<float> action) override;
 
  private:
-  struct Blocks {
-    int opponent_root = 0, opponent_targets = 0, tip = 0, piste = 0;
+  struct Blocks {  // where the observation's fields it reads start
+    int opponent = 0, chest = 0, to_my_end = 0;
   };
   enum class Phase { Approach, Attack, Recover };
 

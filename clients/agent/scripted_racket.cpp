@@ -115,14 +115,19 @@ void ScriptedRacketPolicy::start(const MatchInfo& match) {
     throw std::invalid_argument("the scripted racket policy plays tennis and table tennis, not " +
                                 match.sport);
   const ObservationLayout& l = match.observation;
-  blocks_ = {l.offset("ball_position"), l.offset("ball_velocity"), l.offset("court_position"),
-             l.offset("court_heading"), l.offset("rally")};
+  blocks_ = {l.offset("ball_position", "position"), l.offset("ball_velocity", "velocity"),
+             l.offset("court_position", "x"),       l.offset("court_position", "y"),
+             l.offset("court_heading", "cos"),      l.offset("court_heading", "sin"),
+             l.offset("rally", "struck"),           l.offset("rally", "coming"),
+             l.offset("rally", "bounces")};
   const bool table = match.sport == "table_tennis";
   if (!sport_ || sport_->game.on_table != table)
     sport_ = std::make_unique<Sport>(table ? sports::racket::table_tennis_game()
                                            : sports::racket::tennis_game(1.0));
   control_dt_ = match.control_dt;
-  others_ = l.has("others") ? l.offset("others") : -1;
+  others_.clear();
+  for (int k = 0; l.has("others", "position_" + std::to_string(k)); ++k)
+    others_.push_back(l.offset("others", "position_" + std::to_string(k)));
   doubles_ = match.mode == "2v2";
   struck_this_turn_ = was_coming_ = false;
   my_turn_ = -1;
@@ -138,7 +143,7 @@ void ScriptedRacketPolicy::plan(std::span<const float> o, const CourtFrame& cour
   const auto& game = sport_->game;
   const Eigen::Vector3d ball = court.point(vec3(o, blocks_.ball));
   const Eigen::Vector3d velocity = court.vector(vec3(o, blocks_.ball_velocity));
-  const int bounced = static_cast<int>(std::lround(o[blocks_.rally + 2]));
+  const int bounced = static_cast<int>(std::lround(o[blocks_.bounces]));
   const std::vector<BallSample> path =
       sport_->path.predict(ball, velocity, play.horizon_s, bounced);
   const Eigen::Vector3d shoulder = pose.position[kRShoulder];
@@ -268,25 +273,25 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
   if (!legs_) legs_.emplace(play.legs, control_dt_);
 
   CourtFrame court;
-  court.root = {o[at.court_position], o[at.court_position + 1], o[0]};
-  court.yaw = std::atan2(o[at.court_heading + 1], o[at.court_heading]);
+  court.root = {o[at.court_x], o[at.court_y], smpl::root_height(o)};
+  court.yaw = std::atan2(o[at.heading_sin], o[at.heading_cos]);
   const BodyPose pose = sport_->model.pose_from_observation(o);
   root_velocity_ = smpl::root_velocity(o);
 
   // Doubles: the partner is the other player on this side of the net.
   Eigen::Vector3d partner = court.root;
   if (doubles_)
-    for (int k = 0; k < 3; ++k) {
-      const Eigen::Vector3d p = court.point(vec3(o, others_ + 3 * k));
+    for (int other : others_) {
+      const Eigen::Vector3d p = court.point(vec3(o, other));
       if (p.x() < 0) partner = p;
     }
   const Eigen::Vector3d ball = court.point(vec3(o, at.ball));
-  const bool team_coming = o[at.rally + 1] > 0.5;
-  bool coming = team_coming && o[at.rally] < 0.5;  // to me, not struck yet
+  const bool team_coming = o[at.coming] > 0.5;
+  bool coming = team_coming && o[at.struck] < 0.5;  // to me, not struck yet
   if (doubles_) {
     // Table tennis: partners strike in turn. When the ball leaves the team, whoever did not
     // strike this time strikes next time.
-    if (o[at.rally] > 0.5) struck_this_turn_ = true;
+    if (o[at.struck] > 0.5) struck_this_turn_ = true;
     if (was_coming_ && !team_coming)
       my_turn_ = struck_this_turn_ ? 0 : 1, struck_this_turn_ = false;
     was_coming_ = team_coming;

@@ -19,6 +19,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "control/ball_path.h"
 #include "control/body_model.h"
@@ -35,9 +36,10 @@ class ScriptedRacketPolicy : public Policy {
   void start(const MatchInfo& match) override;
   void act(std::span<const float> observation, std::span<float> action) override;
 
-  // Where the blocks it reads lie (match_info.h).
+  // Where the observation's fields it reads start (match_info.h: found by name).
   struct Blocks {
-    int ball = 0, ball_velocity = 0, court_position = 0, court_heading = 0, rally = 0;
+    int ball = 0, ball_velocity = 0, court_x = 0, court_y = 0, heading_cos = 0, heading_sin = 0,
+        struck = 0, coming = 0, bounces = 0;
   };
   // The stroke being played (court frame), for tests and tuning.
   struct Stroke {
@@ -63,7 +65,7 @@ class ScriptedRacketPolicy : public Policy {
                const Eigen::Vector3d& ball);
 
   Blocks blocks_;
-  int others_ = -1;  // the "others" block (doubles and singles), -1 in ball return
+  std::vector<int> others_;  // the other players' root positions ("others"; none in ball return)
   bool doubles_ = false;
   // Table-tennis doubles' turn: did this player strike while the ball was its team's, and is it
   // its turn (unknown at a point's first stroke: the player nearer the ball takes it).

@@ -29,8 +29,9 @@ void ScriptedSoccerPolicy::start(const MatchInfo& match) {
   if (match.sport != "soccer")
     throw std::invalid_argument("the scripted soccer policy plays soccer, not " + match.sport);
   const ObservationLayout& l = match.observation;
-  blocks_ = {l.offset("ball"), l.offset("goals"), l.has("teammates") ? l.offset("teammates") : -1,
-             l.offset("match")};
+  blocks_ = {l.offset("ball", "position"), l.offset("goals", "attack"), l.offset("goals", "defend"),
+             l.has("teammates") ? l.offset("teammates", "position_0") : -1,
+             l.offset("match", "restart")};
   StepGains gains;
   gains.turn_start = 0.5;
   legs_.emplace(gains, match.control_dt);
@@ -43,9 +44,8 @@ void ScriptedSoccerPolicy::act(std::span<const float> o, std::span<float> a) {
     throw std::invalid_argument("the scripted soccer policy drives the SMPL humanoid (69 actions)");
   std::fill(a.begin(), a.end(), 0.0f);
   const Blocks& at = blocks_;
-  const Eigen::Vector2d ball = xy(o, at.ball), goal = xy(o, at.goals),
-                        own_goal = xy(o, at.goals + 3);
-  const bool theirs_to_take = o[at.match + 3] < -0.5;
+  const Eigen::Vector2d ball = xy(o, at.ball), goal = xy(o, at.goal), own_goal = xy(o, at.own_goal);
+  const bool theirs_to_take = o[at.restart] < -0.5;
 
   if (theirs_to_take) {
     lined_up_ = false;
@@ -54,9 +54,8 @@ void ScriptedSoccerPolicy::act(std::span<const float> o, std::span<float> a) {
   }
   // One chaser per side: whoever is nearer the ball (each of the two sees the same distances),
   // unless the teammate is down (its root far below mine).
-  const bool mate_down = at.teammates >= 0 && o[at.teammates + 2] < kDownBelow_m;
-  const bool chaser =
-      at.teammates < 0 || mate_down || ball.norm() < (ball - xy(o, at.teammates)).norm();
+  const bool mate_down = at.mate >= 0 && vec3(o, at.mate).z() < kDownBelow_m;
+  const bool chaser = at.mate < 0 || mate_down || ball.norm() < (ball - xy(o, at.mate)).norm();
   if (!chaser) {
     lined_up_ = false;
     const Eigen::Vector2d to_ball = ball - own_goal;

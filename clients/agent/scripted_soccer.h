@@ -23,8 +23,8 @@ class ScriptedSoccerPolicy : public Policy {
   void act(std::span<const float> observation, std::span<float> action) override;
 
  private:
-  struct Blocks {
-    int ball = 0, goals = 0, teammates = -1, match = 0;
+  struct Blocks {  // where the fields it reads start (teammate: the first's position; -1: none)
+    int ball = 0, goal = 0, own_goal = 0, mate = -1, restart = 0;
   };
   Blocks blocks_;
   std::optional<StepController> legs_;

@@ -6,8 +6,8 @@
 namespace olympics::client::smpl {
 
 Eigen::Matrix3d body_rotation(std::span<const float> o, int body) {
-  const Eigen::Vector3d x = vec3(o, kSelf.body_rotation(body)).normalized();
-  const Eigen::Vector3d z = vec3(o, kSelf.body_rotation(body) + 3).normalized();
+  const Eigen::Vector3d x = vec3(o, kSelf.body_x_axis(body)).normalized();
+  const Eigen::Vector3d z = vec3(o, kSelf.body_z_axis(body)).normalized();
   Eigen::Matrix3d r;
   r << x, z.cross(x), z;
   return r;

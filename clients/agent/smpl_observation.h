@@ -49,6 +49,7 @@ inline Eigen::Vector3d vec3(std::span<const float> o, int at) {
 inline Eigen::Vector3d body_position(std::span<const float> o, int body) {
   return body == kPelvis ? Eigen::Vector3d::Zero() : vec3(o, kSelf.body_position(body));
 }
+inline double root_height(std::span<const float> o) { return o[kSelf.root_height()]; }
 inline Eigen::Vector3d root_velocity(std::span<const float> o) {
   return vec3(o, kSelf.linear_velocity(kPelvis));
 }

@@ -82,7 +82,7 @@ void StepController::act(std::span<const float> o, const Eigen::Vector2d& target
   const Eigen::Vector2d v = root_velocity(o).head<2>();
   const double distance = target.norm();
 
-  const double ground = -o[0];  // the floor, root-relative
+  const double ground = -root_height(o);  // the floor, root-relative
   if (!stepping_) {
     const bool must_turn = g.turn_start > 0 && std::abs(turn) > g.turn_start;
     if (distance < g.start_m && !must_turn && !losing_balance(o)) return stand(o, a);

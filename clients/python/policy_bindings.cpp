@@ -36,22 +36,39 @@ class NativePolicy {
   std::unique_ptr<client::Policy> policy_;
 };
 
+// The layout of a catalog mode's "observation" list: blocks with name, size and fields (each
+// with name and size).
+client::ObservationLayout layout_of(const py::list& observation) {
+  std::vector<std::string> names, field_names;
+  std::vector<int> sizes, counts, field_sizes;
+  for (const auto& item : observation) {
+    const auto block = item.cast<py::dict>();
+    names.push_back(block["name"].cast<std::string>());
+    sizes.push_back(block["size"].cast<int>());
+    const py::list fields =
+        block.contains("fields") ? block["fields"].cast<py::list>() : py::list();
+    counts.push_back(static_cast<int>(fields.size()));
+    for (const auto& f : fields) {
+      field_names.push_back(f["name"].cast<std::string>());
+      field_sizes.push_back(f["size"].cast<int>());
+    }
+  }
+  return client::ObservationLayout(names, sizes, counts, field_names, field_sizes);
+}
+
 }  // namespace
 
 void bind_native_policy(py::module_& m) {
   py::class_<NativePolicy>(m, "NativePolicy")
       .def(py::init([](const std::string& name, const std::string& sport, const std::string& mode,
-                       const std::vector<std::string>& block_names,
-                       const std::vector<int>& block_sizes, int action_size, double control_hz,
+                       const py::list& observation, int action_size, double control_hz,
                        std::uint64_t seed) {
-             client::MatchInfo info{sport, mode, 1.0 / control_hz,
-                                    client::ObservationLayout(block_names, block_sizes),
+             client::MatchInfo info{sport, mode, 1.0 / control_hz, layout_of(observation),
                                     action_size};
              return std::make_unique<NativePolicy>(name, std::move(info), seed);
            }),
-           py::arg("name"), py::arg("sport"), py::arg("mode"), py::arg("block_names"),
-           py::arg("block_sizes"), py::arg("action_size"), py::arg("control_hz") = 30.0,
-           py::arg("seed") = 1)
+           py::arg("name"), py::arg("sport"), py::arg("mode"), py::arg("observation"),
+           py::arg("action_size"), py::arg("control_hz") = 30.0, py::arg("seed") = 1)
       .def("restart", &NativePolicy::restart)
       .def("act", &NativePolicy::act, py::arg("observation"));
 }

@@ -114,6 +114,32 @@ class EnvAgainstRealServer(unittest.TestCase):
             "SELECT options FROM matches WHERE match_id = ?", (env.result["match_id"],)).fetchone()
         self.assertEqual(json.loads(stored[0]), options)
 
+    def test_task_fields_resolve_by_name_from_the_servers_description(self):
+        env = OlympicsParallelEnv(sport="soccer", mode="1v1", lcm_url=self.url, time_limit_s=1.0)
+        self.assertEqual(env.layout.size("ball", "position"), 3, "from the catalog before reset")
+        observations, _ = env.reset(seed=3)
+        # The server sent every block's fields, and the env reads by them.
+        served = dict(zip((n for n, _ in env.description["obs_blocks"]),
+                          env.description["obs_fields"]))
+        self.assertEqual(served["ball"], [("position", 3), ("velocity", 3), ("spin", 3)])
+        self.assertEqual(served["match"][3], ("restart", 1))
+        obs = observations["slot_0"]
+        ball = env.field(obs, "ball", "position")
+        self.assertEqual(ball.shape, (3,))
+        at = env.layout.offset("ball", "position")
+        np.testing.assert_array_equal(ball, obs[at:at + 3])
+        np.testing.assert_array_equal(env.field(obs, "ball", "velocity"),
+                                      env.block(obs, "ball")[3:6])
+        # It holds the ball: at kick-off the ball lies on the ground, its centre a radius up.
+        root_height = float(env.field(obs, "self", "root_height")[0])
+        self.assertAlmostEqual(float(ball[2]) + root_height, 0.11, delta=0.01)
+        self.assertEqual(env.layout.offset("match", "restart"), env.layout.offset("match") + 3)
+        with self.assertRaises(KeyError) as refused:
+            env.field(obs, "ball", "colour")
+        self.assertIn("position, velocity, spin", str(refused.exception))
+        while env.agents:
+            env.step({a: np.zeros(69, dtype=np.float32) for a in env.agents})
+
     def test_a_secured_server_plays_with_the_secret_and_refuses_without(self):
         secret = os.path.join(self.dir, "secret")
         subprocess.run([f"{BIN}/olympics-server", "secret", secret], check=True, capture_output=True)

@@ -313,10 +313,8 @@ class TrainTest(unittest.TestCase):
         np.testing.assert_allclose(got, want, atol=1e-4)
 
         # Residual: the C++ player adds the same scripted baseline the trainer added.
-        blocks = spec["observation"]
         native = lambda name: NativePolicy(name, "table_tennis", "ball_return",  # noqa: E731
-                                           [b["name"] for b in blocks], [b["size"] for b in blocks],
-                                           spec["action_size"])
+                                           spec["observation"], spec["action_size"])
         player, scripted = native("mlp:" + snapshot), native("scripted")
         for o, w in zip(obs, want):
             np.testing.assert_allclose(player.act(o), np.clip(w, -1, 1) + scripted.act(o),

@@ -63,16 +63,16 @@ TEST(BasketballGame, TheGameStartsWithACheckBallPresentedToTheTakerAndTheDefence
     }
     // The taker's observation: my ball, cleared, presented to me; the defence's: theirs.
     std::vector<float> obs(m->obs_size());
-    const int game_block = block_offset(*m, "game");
+    const auto game = [&](const char* field) { return field_offset(*m, "game", field); };
     m->observe(taker, obs);
-    EXPECT_EQ(obs[game_block + 4], 1.0f);
-    EXPECT_EQ(obs[game_block + 5], 1.0f);
-    EXPECT_EQ(obs[game_block + 6], 1.0f);
-    EXPECT_NEAR(obs[game_block + 3], 12.0f, 1e-6) << "shot clock";
+    EXPECT_EQ(obs[game("possession")], 1.0f);
+    EXPECT_EQ(obs[game("cleared")], 1.0f);
+    EXPECT_EQ(obs[game("presented_to_me")], 1.0f);
+    EXPECT_NEAR(obs[game("shot_clock")], 12.0f, 1e-6);
     const int defender = m->team_of(0) == side ? m->slot_count() - 1 : 0;
     m->observe(defender, obs);
-    EXPECT_EQ(obs[game_block + 4], -1.0f);
-    EXPECT_EQ(obs[game_block + 6], 0.0f);
+    EXPECT_EQ(obs[game("possession")], -1.0f);
+    EXPECT_EQ(obs[game("presented_to_me")], 0.0f);
     // Held still while presented, then free.
     play_zero(*m, 10);
     EXPECT_LT((b.ball().position() - spot).norm(), 1e-9);
@@ -200,7 +200,7 @@ TEST(BasketballGame, OnTheFullCourtPlayStartsAtTheCentreAndEachSideScoresOnItsOw
   EXPECT_NEAR(b.present_spot().x(), court.centre_x(), BasketballMatch::kPresentForward + 0.2);
   // Each slot's "rim" is the basket its side attacks (distances do not depend on the frame).
   std::vector<float> obs(m->obs_size());
-  const int rim = block_offset(*m, "rim");
+  const int rim = field_offset(*m, "rim", "centre");
   for (int s = 0; s < 2; ++s) {
     m->observe(s, obs);
     const double seen = Vector3d(obs[rim], obs[rim + 1], obs[rim + 2]).norm();

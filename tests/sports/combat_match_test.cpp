@@ -86,7 +86,8 @@ TEST(FencingBout, OffThePisteBothFencersGoBackToTheirLines) {
   int halts = 0;
   for (std::uint64_t seed = 1; seed <= 2; ++seed) {
     const Played p = play("fencing", "scripted", "scripted", seed, 60, {{"piste_width", 1.0}});
-    const int piste = block_offset(*p.match, "piste");
+    const int along = field_offset(*p.match, "piste", "along");
+    const int across = field_offset(*p.match, "piste", "across");
     for (size_t k = 0; k < p.events.size(); ++k) {
       const auto& e = p.events[k];
       if (e["call"] != "halt" || e["reason"] != "off_piste" || k >= p.after.size()) continue;
@@ -95,8 +96,8 @@ TEST(FencingBout, OffThePisteBothFencersGoBackToTheirLines) {
       for (int s = 0; s < 2; ++s) {
         // "piste" starts with the root's position along the piste from its side: its line is
         // at -2 m, the seed moves it by up to 0.1 m.
-        EXPECT_NEAR(p.after[k][s][piste], -2.0, 0.11) << "slot " << s << " after " << e.dump();
-        EXPECT_NEAR(p.after[k][s][piste + 1], 0.0, 0.11);
+        EXPECT_NEAR(p.after[k][s][along], -2.0, 0.11) << "slot " << s << " after " << e.dump();
+        EXPECT_NEAR(p.after[k][s][across], 0.0, 0.11);
       }
     }
   }
@@ -123,7 +124,7 @@ TEST(BoxingBout, RoundsEndWithCardsAndStartInTheCorners) {
       play("boxing", "scripted", "scripted", 1, 60, {{"rounds", 2}, {"round_s", 5}, {"rest_s", 1}});
   const auto& o = p.match->outcome();
   EXPECT_TRUE(o.reason == "decision" || o.reason == "decision_draw" || o.reason == "knockout");
-  const int ring = block_offset(*p.match, "ring");
+  const int ring = field_offset(*p.match, "ring", "x");
   int ends = 0, starts = 0, punches = 0;
   for (size_t k = 0; k < p.events.size(); ++k) {
     const auto& e = p.events[k];

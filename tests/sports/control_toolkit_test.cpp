@@ -111,14 +111,18 @@ TEST(GravityCompensation, HoldsAnOutstretchedRacketArmWithin2cmFor3s) {
 double path_error(const std::string& sport, std::uint64_t seed, int* bounced) {
   auto match = sports::sport_or_throw(sport).create({"ball_return", seed, 30.0, {}});
   const auto layout = ObservationLayout::from_blocks(match->layout().observation);
-  const int ball = layout.offset("ball_position"), velocity = layout.offset("ball_velocity"),
-            court = layout.offset("court_position"), heading = layout.offset("court_heading"),
-            rally = layout.offset("rally");
+  const int ball = layout.offset("ball_position", "position"),
+            velocity = layout.offset("ball_velocity", "velocity"),
+            court_x = layout.offset("court_position", "x"),
+            court_y = layout.offset("court_position", "y"),
+            heading_cos = layout.offset("court_heading", "cos"),
+            heading_sin = layout.offset("court_heading", "sin"),
+            bounces = layout.offset("rally", "bounces");
   std::vector<float> obs(match->obs_size()), zero(match->action_size(), 0.0f);
   auto frame_of = [&] {
     CourtFrame f;
-    f.root = {obs[court], obs[court + 1], obs[0]};
-    f.yaw = std::atan2(obs[heading + 1], obs[heading]);
+    f.root = {obs[court_x], obs[court_y], client::smpl::root_height(obs)};
+    f.yaw = std::atan2(obs[heading_sin], obs[heading_cos]);
     return f;
   };
   match->observe(0, obs);
@@ -139,7 +143,7 @@ double path_error(const std::string& sport, std::uint64_t seed, int* bounced) {
     const BallSample& p = predicted[tick * per_tick - 1];
     if (p.own_bounces > 1 || p.other_bounces > 0) break;  // on to where the player stands
     if ((seen - f.root).head<2>().norm() < 1.0) break;    // the body may be in the way
-    *bounced = std::max(*bounced, static_cast<int>(obs[rally + 2]));
+    *bounced = std::max(*bounced, static_cast<int>(obs[bounces]));
     worst = std::max(worst, (seen - p.position).norm());
   }
   return worst;

@@ -85,8 +85,8 @@ TEST(ScriptedRacketPolicy, MovesTowardTheComingBall) {
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     auto match = sports::sport_or_throw("tennis").create({"ball_return", seed, 30.0, {}});
     const auto layout = ObservationLayout::from_blocks(match->layout().observation);
-    const int kCourtY = layout.offset("court_position") + 1;
-    const int kBallX = layout.offset("ball_position"), kBallY = kBallX + 1;
+    const int kCourtY = layout.offset("court_position", "y");
+    const int kBallX = layout.offset("ball_position", "position"), kBallY = kBallX + 1;
     ScriptedRacketPolicy policy;
     policy.start({"tennis", "ball_return", core::kControlDt, layout, 69});
     std::vector<float> obs(match->obs_size()), act(69);

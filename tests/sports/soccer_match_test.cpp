@@ -55,11 +55,11 @@ TEST(SoccerMatch, ABallIntoTheGoalScoresAndTheConcedingSideKicksOffFromItsHalf) 
   const auto layout = client::ObservationLayout::from_blocks(m->layout().observation);
   std::vector<float> o(m->obs_size());
   m->observe(2, o);
-  EXPECT_EQ(o[layout.offset("match") + 3], 1.0f);
-  EXPECT_EQ(o[layout.offset("match") + 1], 1.0f) << "their goals";
+  EXPECT_EQ(o[layout.offset("match", "restart")], 1.0f);
+  EXPECT_EQ(o[layout.offset("match", "their_goals")], 1.0f);
   m->observe(0, o);
-  EXPECT_EQ(o[layout.offset("match") + 3], -1.0f);
-  EXPECT_EQ(o[layout.offset("match")], 1.0f) << "my goals";
+  EXPECT_EQ(o[layout.offset("match", "restart")], -1.0f);
+  EXPECT_EQ(o[layout.offset("match", "my_goals")], 1.0f);
 }
 
 // Goals are judged every physics step, as basketball's baskets: a ball wholly over the line for

@@ -38,5 +38,9 @@ inline const nlohmann::json* find_call(const nlohmann::json& events, const std::
 inline int block_offset(const SportMatch& m, const std::string& name) {
   return client::ObservationLayout::from_blocks(m.layout().observation).offset(name);
 }
+// Where field `field` of block `block` starts (throws naming the block's fields).
+inline int field_offset(const SportMatch& m, const std::string& block, const std::string& field) {
+  return client::ObservationLayout::from_blocks(m.layout().observation).offset(block, field);
+}
 
 }  // namespace olympics::sports

@@ -15,6 +15,7 @@ import numpy as np
 
 from . import catalog
 from ._client import MatchClient
+from .layout import ObservationLayout
 from .servers import CONNECT_TIMEOUT_S, find_servers
 from .spaces import box
 
@@ -68,14 +69,13 @@ class OlympicsParallelEnv(_ParallelEnvBase):
         self.action_spaces = {a: act_space for a in self.possible_agents}
         self.state_space = box(np.tile(obs_space.low, len(self.possible_agents)),
                                np.tile(obs_space.high, len(self.possible_agents)))
-        self.obs_blocks, at = {}, 0  # block name -> slice of an observation
-        self.obs_fields = {}  # (block, field) -> slice, for the blocks the catalog gives fields
-        for b in spec["observation"]:
-            self.obs_blocks[b["name"]] = slice(at, at + b["size"])
-            for f in b.get("fields", []):
-                self.obs_fields[(b["name"], f["name"])] = slice(at + f["offset"],
-                                                                at + f["offset"] + f["size"])
-            at += b["size"]
+        self._use_layout(ObservationLayout.from_catalog(spec))
+
+    def _use_layout(self, layout):
+        """Where the observation's named blocks and fields lie (layout.py)."""
+        self.layout = layout
+        self.obs_blocks = layout.blocks  # block name -> slice of an observation
+        self.obs_fields = layout.fields  # (block, field) -> slice
 
     @property
     def unwrapped(self):
@@ -144,13 +144,13 @@ class OlympicsParallelEnv(_ParallelEnvBase):
             raise ValueError("pass slots=[...] to join a match by its id")
         self.description = self._client.join(match_id, slots, self.timeout_s)
         self._use_mode(self.description["sport"], self.description["mode"], slots)
-        served = [(n, s) for n, s in self.description["obs_blocks"]]
-        known = [(b["name"], b["size"]) for b in self._spec["observation"]]
-        if served != known:
+        served = ObservationLayout.from_description(self.description)
+        if served.entries != self.layout.entries:
             raise RuntimeError(
                 f"the server's {self.description['sport']}/{self.description['mode']} observation "
-                f"blocks {served} differ from this package's catalog {known}: use the Python "
-                "package built with that server")
+                f"blocks and fields {served.entries} differ from this package's catalog "
+                f"{self.layout.entries}: use the Python package built with that server")
+        self._use_layout(served)  # the server's own description, field by field
         self.agents = list(self.possible_agents)
         self.result = None
         self._last_obs = {}
@@ -189,17 +189,12 @@ class OlympicsParallelEnv(_ParallelEnvBase):
 
     def block(self, observation, name):
         """The named block of an observation ("self", "ball_position", ...): describe lists them."""
-        if name not in self.obs_blocks:
-            raise KeyError(f"no observation block {name!r}; blocks: {', '.join(self.obs_blocks)}")
-        return observation[self.obs_blocks[name]]
+        return self.layout.block(observation, name)
 
     def field(self, observation, block, name):
-        """A named field inside a block ("self", "root_height"): the catalog lists the self block's
-        fields, as the server writes them (sports/core/self_observation_layout.h)."""
-        if (block, name) not in self.obs_fields:
-            known = ", ".join(f"{b}.{f}" for b, f in self.obs_fields)
-            raise KeyError(f"no observation field {block}.{name}; fields: {known or 'none'}")
-        return observation[self.obs_fields[(block, name)]]
+        """A named field inside a block (("self", "root_height"), ("ball", "position")): describe
+        lists every block's fields, as the server writes them; env.layout.offset/size give where."""
+        return self.layout.field(observation, block, name)
 
     def _unpack(self, batch, live):
         """The batch's entries for the agents in `live` (those that finished earlier drop out)."""

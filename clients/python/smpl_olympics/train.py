@@ -231,10 +231,8 @@ class Trainer:
 
     # ---------------------------------------------------------------- policies in process
     def native(self, name, seed):
-        blocks = self.spec["observation"]
-        return NativePolicy(name, self.args.sport, self.args.mode, [b["name"] for b in blocks],
-                            [b["size"] for b in blocks], self.action_size,
-                            float(self.spec["control_hz"]), seed)
+        return NativePolicy(name, self.args.sport, self.args.mode, self.spec["observation"],
+                            self.action_size, float(self.spec["control_hz"]), seed)
 
     def make_helpers(self, num_envs):
         base = (lambda e, s: self.native("scripted", e * 100 + s)) if self.args.residual != "none" \
