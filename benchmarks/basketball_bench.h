@@ -19,6 +19,7 @@ struct BasketballBenchOptions {
   double seconds = 2;                                        // wall seconds per speed measurement
   int repeats = 3;
   bool speed = true;
+  bool per_throw = false;  // each scripted throw's release in the report
 };
 
 nlohmann::json run_basketball_bench(const BasketballBenchOptions& options);

@@ -1,5 +1,5 @@
 // olympics-bench basketball [--json] [--throws N | --seeds A-B,..] [--policies P,..]
-//                           [--distances D,.. | --no-distances]
+//                           [--distances D,.. | --no-distances] [--per-throw]
 #include "basketball_bench.h"
 #include "bench_command.h"
 
@@ -21,6 +21,7 @@ BenchCommand basketball_command(CLI::App& app) {
       ->delimiter(',');
   auto no_distances = std::make_shared<bool>(false);
   cli.add_flag("--no-distances", *no_distances, "the scripted shooter from the rule's line only");
+  cli.add_flag("--per-throw", o->per_throw, "each scripted throw's release in the report");
   cli.add_flag("--no-speed{false}", o->speed, "skip the ticks/s measurements");
   cli.add_option("--seconds", o->seconds, "wall seconds per speed measurement")
       ->check(CLI::PositiveNumber);

@@ -1,5 +1,6 @@
 #include "smplx_observation.h"
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 namespace olympics::client::smplx {
@@ -33,8 +34,20 @@ double scale(int body, int axis) {
 
 }  // namespace
 
+Eigen::Matrix3d body_rotation(std::span<const float> o, int body) {
+  const Eigen::Vector3d x = vec3(o, kSelf.body_rotation(body)).normalized();
+  const Eigen::Vector3d z = vec3(o, kSelf.body_rotation(body) + 3).normalized();
+  Eigen::Matrix3d r;
+  r << x, z.cross(x), z;
+  return r;
+}
+
 void set_joint(std::span<float> action, int body, int axis, double radians) {
   action[3 * (body - 1) + axis] = static_cast<float>(radians / scale(body, axis));
+}
+
+double joint_angle(std::span<const float> action, int body, int axis) {
+  return action[3 * (body - 1) + axis] * scale(body, axis);
 }
 
 }  // namespace olympics::client::smplx

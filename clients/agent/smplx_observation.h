@@ -51,8 +51,13 @@ inline Eigen::Vector3d body_position(std::span<const float> o, int body) {
   return body == 0 ? Eigen::Vector3d::Zero() : vec3(o, kSelf.body_position(body));
 }
 
+// Body `body`'s rotation (body frame to heading frame), from its observed x and z axes.
+Eigen::Matrix3d body_rotation(std::span<const float> o, int body);
+
 // Sets joint `body`'s hinge `axis` (0 x, 1 y, 2 z) to `radians`, through the action scale the
 // server applies (sports/core/action_map.h: min(1.2 x the range's bound, pi), knee flexion 5).
 void set_joint(std::span<float> action, int body, int axis, double radians);
+// The angle set_joint wrote.
+double joint_angle(std::span<const float> action, int body, int axis);
 
 }  // namespace olympics::client::smplx

@@ -5,6 +5,7 @@
 #include "core/body_mass.h"
 #include "equipment/equipment.h"
 #include "smpl_observation.h"
+#include "smplx_observation.h"
 
 namespace olympics::client::control {
 
@@ -54,13 +55,14 @@ bool BodyModel::in_subtree(int body, int ancestor) const {
 }
 
 BodyPose BodyModel::pose_from_observation(std::span<const float> o) const {
-  if (size() != 24)
+  const bool smplx = size() == smplx::kBodies;
+  if (size() != smpl::kBodies && !smplx)
     throw std::invalid_argument(
-        "pose_from_observation reads the SMPL self observation (24 bodies)");
+        "pose_from_observation reads the SMPL or SMPL-X self observation (24 or 52 bodies)");
   BodyPose pose;
   for (int i = 0; i < size(); ++i) {
-    pose.position.push_back(smpl::body_position(o, i));
-    pose.rotation.push_back(smpl::body_rotation(o, i));
+    pose.position.push_back(smplx ? smplx::body_position(o, i) : smpl::body_position(o, i));
+    pose.rotation.push_back(smplx ? smplx::body_rotation(o, i) : smpl::body_rotation(o, i));
   }
   return pose;
 }

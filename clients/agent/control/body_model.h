@@ -49,7 +49,7 @@ class BodyModel {
   // Is `body` `ancestor` or below it in the tree?
   bool in_subtree(int body, int ancestor) const;
 
-  // The pose of every body from an SMPL self observation (its first 358 floats).
+  // The pose of every body from an SMPL or SMPL-X self observation (its first 358 or 778 floats).
   BodyPose pose_from_observation(std::span<const float> observation) const;
   // Forward kinematics: body rotations relative to their parents (rotation[0]: the root's, in
   // the heading frame) to a pose with the root at the origin.

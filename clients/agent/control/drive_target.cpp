@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "smpl_observation.h"
+#include "smplx_observation.h"
 
 namespace olympics::client::control {
 
@@ -38,14 +39,21 @@ Eigen::Matrix3d drive_target(const ModelBody& body, const Eigen::Matrix3d& desir
   return exp_rotation(offset) * desired;
 }
 
+// An SMPL-X action (153 targets) has its own scales per joint; an SMPL one (69) scales by pi.
 void write_joint(std::span<float> action, int body, const Eigen::Matrix3d& target) {
   const Eigen::Vector3d a = euler_xyz(target);
-  for (int axis = 0; axis < 3; ++axis) smpl::set_joint(action, body, axis, a[axis]);
+  const bool smplx = action.size() == smplx::kActions;
+  for (int axis = 0; axis < 3; ++axis)
+    smplx ? smplx::set_joint(action, body, axis, a[axis])
+          : smpl::set_joint(action, body, axis, a[axis]);
 }
 
 Eigen::Matrix3d read_joint(std::span<const float> action, int body) {
   Eigen::Vector3d a;
-  for (int axis = 0; axis < 3; ++axis) a[axis] = smpl::joint_angle(action, body, axis);
+  const bool smplx = action.size() == smplx::kActions;
+  for (int axis = 0; axis < 3; ++axis)
+    a[axis] =
+        smplx ? smplx::joint_angle(action, body, axis) : smpl::joint_angle(action, body, axis);
   return from_euler_xyz(a);
 }
 

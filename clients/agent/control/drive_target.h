@@ -38,8 +38,8 @@ Eigen::Matrix3d drive_target(const ModelBody& body, const Eigen::Matrix3d& desir
                              const Eigen::Vector3d& held,
                              const Eigen::Vector3d& velocity = Eigen::Vector3d::Zero());
 
-// Writes a joint's target rotation into an SMPL action (three hinge angles, set_joint scaling),
-// and reads one back.
+// Writes a joint's target rotation into an SMPL or SMPL-X action (by its size) (three hinge angles,
+// set_joint scaling), and reads one back.
 void write_joint(std::span<float> action, int body, const Eigen::Matrix3d& target);
 Eigen::Matrix3d read_joint(std::span<const float> action, int body);
 
