@@ -7,47 +7,17 @@
 
 #include <algorithm>
 
+#include "../athletics/field_event_session.h"
 #include "high_jump/high_jump_sport.h"
-#include "registry.h"
 
 namespace olympics::sports::high_jump {
 namespace {
 
-struct Session {
-  std::unique_ptr<HighJumpMatch> match;
-  std::vector<float> zero;
-};
+using Session = athletics::FieldEventSession<HighJumpMatch, HighJumpSport>;
+using athletics::give_velocity;
 
 Session start(const std::string& mode, const nlohmann::json& options) {
-  const auto& sport = dynamic_cast<const HighJumpSport&>(sport_or_throw("high_jump"));
-  MatchSettings s;
-  s.mode = mode;
-  s.seed = 3;
-  s.time_limit_s = 30;
-  s.options = options;
-  Session r{std::make_unique<HighJumpMatch>(sport.rules(options), sport.modes().at(mode),
-                                            sport.layout(mode), s),
-            {}};
-  r.zero.assign(r.match->action_size(), 0.0f);
-  return r;
-}
-
-void step(Session& r) {
-  std::vector<std::span<const float>> actions(r.match->slot_count(), r.zero);
-  r.match->step(actions);
-}
-
-nlohmann::json wait_for(Session& r, const std::string& call, int ticks) {
-  for (int i = 0; i < ticks && !r.match->outcome().match_over; ++i) {
-    step(r);
-    for (const auto& e : r.match->outcome().info["events"])
-      if (e["call"] == call) return e;
-  }
-  return nullptr;
-}
-
-void give_velocity(core::Humanoid& h, const Eigen::Vector3d& v) {
-  for (int b = 0; b < h.body_count(); ++b) dBodySetLinearVel(h.ode_body(b), v.x(), v.y(), v.z());
+  return Session("high_jump", mode, options);
 }
 
 const nlohmann::json kOfficial = {{"rules", "official"}, {"bar_height", 0.5}};
@@ -55,7 +25,7 @@ const nlohmann::json kOfficial = {{"rules", "official"}, {"bar_height", 0.5}};
 TEST(HighJumpMatch, TheBarRestsOnItsSupportsUntouched) {
   Session r = start("solo", kOfficial);
   const Eigen::Vector3d rest = r.match->bar(0).position();
-  for (int i = 0; i < 60; ++i) step(r);  // 2 s, the athlete standing 20 m away
+  for (int i = 0; i < 60; ++i) r.step();  // 2 s, the athlete standing 20 m away
   EXPECT_TRUE(r.match->bar(0).in_place());
   EXPECT_LT((r.match->bar(0).position() - rest).norm(), 0.005);
 }
@@ -64,7 +34,7 @@ TEST(HighJumpMatch, ABarKnockedFallsAndTheAttemptFails) {
   for (const auto& options : {kOfficial, nlohmann::json{{"bar_height", 0.5}}}) {
     Session r = start("solo", options);
     dBodySetLinearVel(r.match->bar(0).body(), 1.0, 0, 0);  // knocked toward the mat
-    const auto e = wait_for(r, "failure", 30);
+    const auto e = r.wait_for("failure", 30);
     ASSERT_FALSE(e.is_null()) << options;
     EXPECT_EQ(e["reason"], "bar_dislodged");
     EXPECT_DOUBLE_EQ(e["height"].get<double>(), 0.5);
@@ -101,7 +71,7 @@ TEST(HighJumpMatch, ABodyOverTheBarCleanlyIsAClearance) {
   // Upright, its feet well above the 0.5 m bar, moving over it toward the mat.
   h.reset({{19.5, bar_y, 2.1}, 0});
   give_velocity(h, {3.0, 0, 0});
-  const auto e = wait_for(r, "cleared", 120);
+  const auto e = r.wait_for("cleared", 120);
   ASSERT_FALSE(e.is_null()) << "no clearance";
   EXPECT_DOUBLE_EQ(e["height"].get<double>(), 0.5);
   EXPECT_TRUE(r.match->bar(0).in_place());
@@ -115,7 +85,7 @@ TEST(HighJumpMatch, PaperClearsOnceEveryBodyIsPastTheBar) {
   core::Humanoid& h = r.match->athlete(0);
   h.reset({{19.5, r.match->rules().bar_y, 2.1}, 0});
   give_velocity(h, {3.0, 0, 0});
-  const auto e = wait_for(r, "cleared", 60);
+  const auto e = r.wait_for("cleared", 60);
   ASSERT_FALSE(e.is_null());
   EXPECT_TRUE(r.match->outcome().match_over) << "one height, one try: the seed's episode";
 }
@@ -125,7 +95,7 @@ TEST(HighJumpMatch, RunningUnderTheBarFails) {
   core::Humanoid& h = r.match->athlete(0);
   h.reset({{19.5, r.match->rules().bar_y, 1.2}, 0});  // the head below the 2 m bar
   give_velocity(h, {3.0, 0, 0});
-  const auto e = wait_for(r, "failure", 60);
+  const auto e = r.wait_for("failure", 60);
   ASSERT_FALSE(e.is_null());
   EXPECT_EQ(e["reason"], "touched_beyond");
 }
@@ -137,7 +107,7 @@ TEST(HighJumpMatch, TheSoftMatGivesUnderALanding) {
   h.reset({{22.0, bar_y, kMatHeight + 1.5}, 0});  // dropped flat-footed onto the mat
   double lowest = 1e9;                            // the lowest point of any of its geoms
   for (int i = 0; i < 45; ++i) {
-    step(r);
+    r.step();
     for (int b = 0; b < h.body_count(); ++b)
       for (dGeomID g = dBodyGetFirstGeom(h.ode_body(b)); g; g = dBodyGetNextGeom(g)) {
         dReal aabb[6];

@@ -7,49 +7,18 @@
 
 #include <algorithm>
 
+#include "../athletics/field_event_session.h"
 #include "athletics/athlete_probe.h"
 #include "long_jump/long_jump_sport.h"
-#include "registry.h"
 
 namespace olympics::sports::long_jump {
 namespace {
 
-struct Session {
-  std::unique_ptr<LongJumpMatch> match;
-  std::vector<float> zero;
-};
+using Session = athletics::FieldEventSession<LongJumpMatch, LongJumpSport>;
+using athletics::give_velocity;
 
 Session start(const std::string& mode, const nlohmann::json& options) {
-  const auto& sport = dynamic_cast<const LongJumpSport&>(sport_or_throw("long_jump"));
-  MatchSettings s;
-  s.mode = mode;
-  s.seed = 7;
-  s.time_limit_s = 30;
-  s.options = options;
-  Session r{std::make_unique<LongJumpMatch>(sport.rules(options), sport.modes().at(mode),
-                                            sport.layout(mode), s),
-            {}};
-  r.zero.assign(r.match->action_size(), 0.0f);
-  return r;
-}
-
-void step(Session& r) {
-  std::vector<std::span<const float>> actions(r.match->slot_count(), r.zero);
-  r.match->step(actions);
-}
-
-// The first event with this call, after stepping until it comes (or `ticks` pass).
-nlohmann::json wait_for(Session& r, const std::string& call, int ticks) {
-  for (int i = 0; i < ticks && !r.match->outcome().match_over; ++i) {
-    step(r);
-    for (const auto& e : r.match->outcome().info["events"])
-      if (e["call"] == call) return e;
-  }
-  return nullptr;
-}
-
-void give_velocity(core::Humanoid& h, const Eigen::Vector3d& v) {
-  for (int b = 0; b < h.body_count(); ++b) dBodySetLinearVel(h.ode_body(b), v.x(), v.y(), v.z());
+  return Session("long_jump", mode, options);
 }
 
 TEST(LongJumpMatch, AToePastTheFoulLineOnTheGroundIsAFoul) {
@@ -57,7 +26,7 @@ TEST(LongJumpMatch, AToePastTheFoulLineOnTheGroundIsAFoul) {
   core::Humanoid& h = r.match->athlete(0);
   h.reset({{19.90, 0, 0}, 0});  // standing on the board, facing the pit
   ASSERT_GT(athletics::foremost_x(h), 20.0) << "the set-up: the toes reach past the line";
-  const auto e = wait_for(r, "foul", 3);
+  const auto e = r.wait_for("foul", 3);
   ASSERT_FALSE(e.is_null());
   EXPECT_EQ(e["reason"], "past_the_line");
   EXPECT_EQ(r.match->series(0).fouls(), 1);
@@ -68,7 +37,7 @@ TEST(LongJumpMatch, StandingBehindTheLineIsNoFoul) {
   core::Humanoid& h = r.match->athlete(0);
   h.reset({{19.70, 0, 0}, 0});
   ASSERT_LT(athletics::foremost_x(h), 20.0);
-  EXPECT_TRUE(wait_for(r, "foul", 10).is_null());
+  EXPECT_TRUE(r.wait_for("foul", 10).is_null());
 }
 
 TEST(LongJumpMatch, TheMarkIsTheNearestBreakInTheSand) {
@@ -80,7 +49,7 @@ TEST(LongJumpMatch, TheMarkIsTheNearestBreakInTheSand) {
   double nearest_point = 1e9;  // the rearmost point of the body while in the pit, for comparison
   nlohmann::json mark;
   for (int i = 0; i < 120 && mark.is_null(); ++i) {
-    step(r);
+    r.step();
     const double rear = [&] {
       double x = 1e9;
       for (int b = 0; b < h.body_count(); ++b)
@@ -108,7 +77,7 @@ TEST(LongJumpMatch, PaperMeasuresTheMeanXOfTheBodiesAtTheLanding) {
   core::Humanoid& h = r.match->athlete(0);
   h.reset({{24.0, 0, 1.2}, 0});
   give_velocity(h, {0.5, 0, 0});
-  const auto e = wait_for(r, "mark", 60);
+  const auto e = r.wait_for("mark", 60);
   ASSERT_FALSE(e.is_null());
   EXPECT_NEAR(e["mark"].get<double>(), athletics::mean_body_position(h).x() - 20.0, 0.1);
   EXPECT_NEAR(r.match->outcome().terms[0][3], e["mark"].get<double>(), 1e-5) << "r_l";
@@ -122,7 +91,7 @@ TEST(LongJumpMatch, ACompetitionRanksItsAthletesWhenEverySeriesIsOver) {
     const double x = std::vector<double>{24.0, 26.0, 19.9}[slot];  // the third fouls
     h.reset({{x, r.match->lane_y(slot), x > 20 ? 1.2 : 0.0}, 0});
   }
-  for (int i = 0; i < 150 && !r.match->outcome().match_over; ++i) step(r);
+  for (int i = 0; i < 150 && !r.match->outcome().match_over; ++i) r.step();
   const TickOutcome& o = r.match->outcome();
   ASSERT_TRUE(o.match_over);
   EXPECT_EQ(o.reason, "series_complete");
