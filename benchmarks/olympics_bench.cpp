@@ -20,6 +20,7 @@ namespace olympics::bench {
   X(racket)                    \
   X(soccer)                    \
   X(basketball)                \
+  X(athletics)                 \
   X(combat)                    \
   X(soak)                      \
   X(vector)                    \

@@ -17,6 +17,8 @@ namespace olympics::sports {
   X(boxing)                \
   X(soccer)                \
   X(basketball)            \
+  X(long_jump)             \
+  X(high_jump)             \
   /* the list's end */
 // clang-format on
 

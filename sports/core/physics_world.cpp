@@ -55,6 +55,15 @@ GeomTag* arena_tag(std::vector<std::unique_ptr<GeomTag>>& tags, double friction,
   return tags.back().get();
 }
 
+// The softness a pair's contacts take: the softer of the two geoms' own, if either has one.
+const ContactSoftness* softer_surface(const GeomTag* a, const GeomTag* b) {
+  const ContactSoftness* soft_a = a && a->softness ? &*a->softness : nullptr;
+  const ContactSoftness* soft_b = b && b->softness ? &*b->softness : nullptr;
+  if (!soft_a) return soft_b;
+  if (!soft_b) return soft_a;
+  return soft_b->stiffness < soft_a->stiffness ? soft_b : soft_a;
+}
+
 }  // namespace
 
 dGeomID PhysicsWorld::add_static_capsule(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
@@ -86,6 +95,8 @@ void PhysicsWorld::step(double dt) {
   feedback_.clear();
   feedback_normals_.clear();
   pending_.clear();
+  ground_contacts_.clear();
+  step_dt_ = dt;
   dSpaceCollide(space_, this, &PhysicsWorld::near_callback);
   dWorldQuickStep(world_, dt);
   measure_sensed_forces();
@@ -110,6 +121,12 @@ void PhysicsWorld::measure_sensed_forces() {
     c.normal = (p.sensor_is_first ? 1.0 : -1.0) * normal.normalized();
     sensed_.push_back(c);
   }
+}
+
+void PhysicsWorld::record_ground_contact(const GeomTag* tag, const dContactGeom* points,
+                                         int count) {
+  for (int i = 0; i < count; ++i)
+    ground_contacts_.push_back({tag, {points[i].pos[0], points[i].pos[1], points[i].pos[2]}});
 }
 
 void PhysicsWorld::near_callback(void* self, dGeomID a, dGeomID b) {
@@ -138,6 +155,8 @@ void PhysicsWorld::collide_pair(dGeomID a, dGeomID b) {
   double rest_b = b_ground ? settings_.ground_restitution : (tag_b ? tag_b->restitution : 0.0);
   if (a_ground && tag_b && tag_b->ground_touch) *tag_b->ground_touch = 1;
   if (b_ground && tag_a && tag_a->ground_touch) *tag_a->ground_touch = 1;
+  if ((a_ground && tag_b) || (b_ground && tag_a))
+    record_ground_contact(a_ground ? tag_b : tag_a, found.data(), n);
 
   dContact contact{};
   // MuJoCo's rule for pairs: the larger friction wins; restitution likewise.
@@ -145,6 +164,10 @@ void PhysicsWorld::collide_pair(dGeomID a, dGeomID b) {
   contact.surface.mode = dContactApprox1 | dContactSoftERP | dContactSoftCFM;
   contact.surface.soft_erp = settings_.contact_erp;
   contact.surface.soft_cfm = settings_.contact_cfm;
+  if (const ContactSoftness* soft = softer_surface(tag_a, tag_b)) {
+    contact.surface.soft_erp = soft->erp(step_dt_);
+    contact.surface.soft_cfm = soft->cfm(step_dt_);
+  }
   double restitution = std::max(rest_a, rest_b);
   if (tag_a && tag_a->absorbs) restitution = rest_a;
   if (tag_b && tag_b->absorbs) restitution = rest_b;

@@ -14,6 +14,7 @@
 #include <deque>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace olympics::core {
@@ -32,6 +33,18 @@ struct WorldSettings {
   int max_contacts_per_pair = 4;
 };
 
+// How a surface gives under a contact (a landing mat, a sand pit): a spring and a damper per
+// contact point. Contacts with a geom that declares one use it instead of the world's
+// contact_erp/contact_cfm; ODE's soft ERP and CFM for a step follow from the spring-damper and
+// the step's length (ODE manual, "How to use ERP and CFM": erp = h k / (h k + c),
+// cfm = 1 / (h k + c)).
+struct ContactSoftness {
+  double stiffness = 0;  // N/m per contact point
+  double damping = 0;    // N s/m per contact point
+  double erp(double dt) const { return dt * stiffness / (dt * stiffness + damping); }
+  double cfm(double dt) const { return 1.0 / (dt * stiffness + damping); }
+};
+
 // Per-geom identity, stored as the geom's user data.
 struct GeomTag {
   int entity = -1;      // -1: static arena
@@ -43,6 +56,9 @@ struct GeomTag {
   // This geom's restitution, not the larger of the pair's, holds for its contacts: a net or
   // padding swallows the bounce of a lively ball.
   bool absorbs = false;
+  // This geom's own give (a mat, sand); none: the world's contact_erp/contact_cfm. When both
+  // geoms of a pair declare one, the softer (lower stiffness) holds: the mat yields, not the foot.
+  std::optional<ContactSoftness> softness;
   // Set by PhysicsWorld::step when this geom touched the ground plane during the step.
   std::uint8_t* ground_touch = nullptr;
 };
@@ -54,6 +70,12 @@ struct SensedContact {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // mean of the pair's contact points
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();    // unit, from the other geom to the sensor
   double normal_force = 0;                             // N, summed over the pair's contact points
+};
+
+// A contact point of a tagged geom with the ground plane during the last step.
+struct GroundContact {
+  const GeomTag* geom = nullptr;
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
 };
 
 class PhysicsWorld {
@@ -78,6 +100,10 @@ class PhysicsWorld {
   dGeomID add_static_box(const Eigen::Vector3d& centre, const Eigen::Vector3d& half,
                          double friction, double restitution);
 
+  // The tag of a geom this world made or a humanoid tagged (its user data): to make a static
+  // geom soft (`softness`) or a sensor after adding it.
+  static GeomTag& tag_of(dGeomID geom) { return *static_cast<GeomTag*>(dGeomGetData(geom)); }
+
   // Collide, solve one QuickStep of dt seconds, drop the contacts.
   void step(double dt);
   int last_contact_count() const { return last_contact_count_; }
@@ -85,6 +111,9 @@ class PhysicsWorld {
   int last_inter_entity_contact_count() const { return last_inter_entity_contacts_; }
   // Every contact pair of a sensor geom in the last step (a pair of two sensors: once from each).
   const std::vector<SensedContact>& sensed_contacts() const { return sensed_; }
+  // Every tagged geom's contact with the ground plane in the last step, where it touched (a
+  // foot beyond a foul line), unlike GeomTag::ground_touch, which a tick accumulates.
+  const std::vector<GroundContact>& ground_contacts() const { return ground_contacts_; }
 
  private:
   static void near_callback(void* self, dGeomID a, dGeomID b);
@@ -92,6 +121,7 @@ class PhysicsWorld {
   void sense(const GeomTag* sensor, const GeomTag* other, bool sensor_is_first,
              const dContactGeom* points, int count);
   void measure_sensed_forces();
+  void record_ground_contact(const GeomTag* tag, const dContactGeom* points, int count);
 
   // A sensed pair waiting for the solver: its contacts' feedback slots.
   struct PendingSense {
@@ -109,12 +139,14 @@ class PhysicsWorld {
   dThreadingImplementationID threading_ = nullptr;
   std::vector<SelfCollisionFilter> entity_filters_;
   std::vector<std::unique_ptr<GeomTag>> static_tags_;
+  double step_dt_ = 0;  // the step being collided: soft contacts' ERP and CFM depend on it
   int last_contact_count_ = 0;
   int last_inter_entity_contacts_ = 0;
   std::deque<dJointFeedback> feedback_;  // deque: ODE keeps pointers to its elements
   std::vector<Eigen::Vector3d> feedback_normals_;
   std::vector<PendingSense> pending_;
   std::vector<SensedContact> sensed_;
+  std::vector<GroundContact> ground_contacts_;
 };
 
 }  // namespace olympics::core

@@ -1,0 +1,23 @@
+// What the field events' competitions share: their modes (one athlete, or 2 to 8 each its own
+// team, one slot each) and how a finished series becomes the match's outcome (every athlete's
+// place; the single first place wins).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sport.h"
+
+namespace olympics::sports::athletics {
+
+inline constexpr int kMaxAthletes = 8;
+
+// "solo", then "competition_2" ... "competition_8": N athletes, each its own team.
+ModeTable field_event_modes(const std::string& sport, const std::string& what);
+
+// Ends the match: scores per team (= per athlete) and info["places"] (1 = first, shared places
+// for ties); the winner is the one athlete in first place, if only one is.
+void end_competition(TickOutcome& outcome, const std::vector<int>& places,
+                     const std::vector<float>& scores, const std::string& why);
+
+}  // namespace olympics::sports::athletics

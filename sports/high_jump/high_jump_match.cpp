@@ -1,0 +1,199 @@
+#include "high_jump/high_jump_match.h"
+
+#include <algorithm>
+
+#include "athletics/competition.h"
+#include "core/humanoid_assets.h"
+#include "high_jump/high_jump_rewards.h"
+
+namespace olympics::sports::high_jump {
+namespace {
+
+const core::ModelSpec& athlete_model() {
+  static const core::ModelSpec spec = core::load_humanoid(core::HumanoidKind::Smpl);
+  return spec;
+}
+
+}  // namespace
+
+std::vector<LayoutBlock> high_jump_task_layout() {
+  return {{"bar", 6, "m", "the crossbar's two ends relative to the root, heading frame"},
+          {"goal", 3, "m", "the seed's goal (2 m past the bar, 1 m up) relative to the root"},
+          {"attempt", 4, "m, count, fraction, m",
+           "the height to clear, tries left at it, share of the attempt's time left, my best "
+           "height so far (0: none)"}};
+}
+
+std::vector<RefereeCall> high_jump_calls() {
+  return {{"cleared", "the bar was cleared: height, attempt", kAnnounced},
+          {"failure",
+           "a failed attempt: reason (bar_dislodged, touched_beyond, fell, left_area, time), "
+           "height, attempt",
+           kAnnounced},
+          {"fall", "an athlete fell (body)"}};
+}
+
+HighJumpMatch::HighJumpMatch(const HighJumpRules& rules, const ModeSpec& mode, Layout layout,
+                             const MatchSettings& settings)
+    : SmplMatch(mode, std::move(layout), settings), rules_(rules) {
+  for (int slot = 0; slot < slot_count(); ++slot) {
+    Athlete a{athletics::HeightSeries(rules_.heights, rules_.tries_per_height),
+              HighJumpReferee(rules_),
+              std::make_unique<Crossbar>(scene().world(), rules_, rules_.bar_x, bar_y(slot),
+                                         rules_.heights.front()),
+              0.0,
+              std::nullopt,
+              Eigen::Vector3d::Zero(),
+              Eigen::Vector3d::Zero()};
+    athletes_.push_back(std::move(a));
+    mat_tags_.push_back(nullptr);
+    if (rules_.landing_mat) {
+      const athletics::Footprint m = mat(slot);
+      dGeomID g = scene().world().add_static_box(
+          {0.5 * (m.x_lo + m.x_hi), bar_y(slot), 0.5 * kMatHeight},
+          {0.5 * kMatDepth, 0.5 * kMatWidth, 0.5 * kMatHeight}, 1.0, 0.0);
+      core::GeomTag& tag = core::PhysicsWorld::tag_of(g);
+      tag.softness = kFoam;
+      tag.sensor = true;
+      mat_tags_.back() = &tag;
+    }
+    add_player(athlete_model(), start_mark(slot));
+    athletes_.back().root_prev = athletes_.back().reward_root_prev =
+        player(slot).body_state(0).position;
+  }
+}
+
+athletics::Footprint HighJumpMatch::mat(int slot) const {
+  const double x0 = rules_.bar_x + kMatGap;
+  return {x0, x0 + kMatDepth, bar_y(slot) - 0.5 * kMatWidth, bar_y(slot) + 0.5 * kMatWidth};
+}
+
+BarStep HighJumpMatch::read_step(int slot) const {
+  const core::Humanoid& h = player(slot);
+  const Athlete& a = athletes_[slot];
+  const athletics::Footprint none{};
+  const auto c = athletics::athlete_contacts(scene().world(), h.entity(), mat_tags_[slot],
+                                             mat_tags_[slot] ? mat(slot) : none);
+  BarStep s;
+  s.t = time() - a.attempt_start;
+  s.bar_height = a.bar->height();
+  s.bar_in_place = a.bar->in_place();
+  s.root = h.body_state(0).position - bar_centre(slot);
+  s.root_prev = a.root_prev - bar_centre(slot);
+  double min_x = 1e9;
+  for (int b = 0; b < h.body_count(); ++b) min_x = std::min(min_x, h.body_state(b).position.x());
+  s.min_body_x = min_x - rules_.bar_x;
+  s.touched_beyond = c.on_surface || (c.on_ground && c.ground_front_x > rules_.bar_x);
+  s.down = down(slot);
+  return s;
+}
+
+void HighJumpMatch::after_physics_step(double) {
+  for (int slot = 0; slot < slot_count(); ++slot) {
+    Athlete& a = athletes_[slot];
+    if (a.series.done() || a.decided) continue;
+    if (auto d = a.referee.step(read_step(slot))) a.decided = *d;
+    a.root_prev = player(slot).body_state(0).position;
+  }
+}
+
+void HighJumpMatch::settle_tick() {
+  for (int slot = 0; slot < slot_count(); ++slot) {
+    Athlete& a = athletes_[slot];
+    const Eigen::Vector3d root = player(slot).body_state(0).position;
+    const auto terms = high_jump_reward_terms(a.reward_root_prev, root, goal(slot), rules_.bar_x);
+    a.reward_root_prev = root;
+    set_reward(slot, terms);
+    if (a.decided) {
+      const double height = a.bar->height();
+      a.series.record(a.decided->cleared);
+      nlohmann::json e = referee_event(a.decided->cleared ? "cleared" : "failure", time(), slot);
+      e["height"] = height;
+      e["attempt"] = a.series.attempts();
+      if (!a.decided->cleared) e["reason"] = a.decided->reason;
+      log(std::move(e));
+      a.decided.reset();
+      if (!a.series
+               .done()) {  // the next attempt: the bar up (at the series' height), back to the mark
+        a.bar->set(a.series.bar_height());
+        reset_player(slot, start_mark(slot));
+        a.referee = HighJumpReferee(rules_);
+        a.attempt_start = time();
+        a.root_prev = a.reward_root_prev = player(slot).body_state(0).position;
+      }
+    }
+    outcome_.scores[slot] = static_cast<float>(a.series.best());
+  }
+  if (std::all_of(athletes_.begin(), athletes_.end(),
+                  [](const Athlete& a) { return a.series.done(); }))
+    finish();
+}
+
+void HighJumpMatch::finish() {
+  std::vector<athletics::HeightSeries> series;
+  std::vector<float> best;
+  for (const auto& a : athletes_) {
+    series.push_back(a.series);
+    best.push_back(static_cast<float>(a.series.best()));
+  }
+  athletics::end_competition(outcome_, athletics::places(series), best, "series_complete");
+}
+
+void HighJumpMatch::on_time_limit() {
+  SmplMatch::on_time_limit();
+  std::vector<athletics::HeightSeries> series;
+  for (const auto& a : athletes_) series.push_back(a.series);
+  outcome_.info["places"] = athletics::places(series);
+}
+
+void HighJumpMatch::write_task_observation(int slot, const HeadingFrame& frame,
+                                           ObservationWriter& out) const {
+  const Athlete& a = athletes_[slot];
+  out.begin("bar").put(frame.point(a.bar->end(-1))).put(frame.point(a.bar->end(1)));
+  out.begin("goal").put(frame.point(goal(slot)));
+  const double t = time() - a.attempt_start;
+  out.begin("attempt")
+      .put(a.series.bar_height())
+      .put(static_cast<double>(a.series.tries_left_at_height()))
+      .put(std::clamp(1.0 - t / rules_.attempt_s, 0.0, 1.0))
+      .put(a.series.best());
+}
+
+void HighJumpMatch::extra_state(std::vector<double>& values) const {
+  for (const auto& a : athletes_) {
+    const dBodyID b = a.bar->body();
+    for (const dReal* v : {dBodyGetPosition(b), dBodyGetLinearVel(b), dBodyGetAngularVel(b)})
+      values.insert(values.end(), v, v + 3);
+    const dReal* q = dBodyGetQuaternion(b);
+    values.insert(values.end(), q, q + 4);
+  }
+}
+
+void HighJumpMatch::describe_scene(SceneBuilder& scene) const {
+  scene.set_ground(rules_.bar_x + 8, rules_.bar_y + slot_count() * rules_.lane_spacing + 4,
+                   "#b5653c");
+  for (int slot = 0; slot < slot_count(); ++slot) {
+    if (rules_.landing_mat) {
+      const athletics::Footprint m = mat(slot);
+      scene.add_box(-1, {0.5 * (m.x_lo + m.x_hi), bar_y(slot), 0.5 * kMatHeight},
+                    {0.5 * kMatDepth, 0.5 * kMatWidth, 0.5 * kMatHeight}, "landing_mat", "#2f5fa8");
+    }
+    for (int side : {-1, 1}) {
+      const Eigen::Vector3d foot{rules_.bar_x, bar_y(slot) + side * 0.5 * rules_.upright_gap, 0};
+      scene.add_segment(-1, "cylinder", foot, foot + Eigen::Vector3d(0, 0, 2.7), 0.02, "upright",
+                        "#d8d8d8");
+    }
+  }
+  for (int slot = 0; slot < slot_count(); ++slot) {
+    const int body = scene.add_body("crossbar_" + std::to_string(slot), -1, "crossbar");
+    const double half = 0.5 * rules_.bar_length;
+    scene.add_segment(body, "cylinder", {0, 0, -half}, {0, 0, half}, rules_.bar_radius, "crossbar",
+                      "#e8e8e8");
+  }
+}
+
+void HighJumpMatch::extra_scene_poses(std::vector<float>& out) const {
+  for (const auto& a : athletes_) append_pose(out, a.bar->position(), a.bar->orientation());
+}
+
+}  // namespace olympics::sports::high_jump

@@ -1,0 +1,47 @@
+#include "high_jump/high_jump_referee.h"
+
+#include <cmath>
+
+namespace olympics::sports::high_jump {
+
+std::optional<BarDecision> HighJumpReferee::decide(bool cleared, std::string why) {
+  decided_ = true;
+  return BarDecision{cleared, std::move(why)};
+}
+
+std::optional<BarDecision> HighJumpReferee::step(const BarStep& s) {
+  if (decided_) return std::nullopt;
+  if (!s.bar_in_place) return decide(false, "bar_dislodged");
+  return rules_.official ? official_step(s) : paper_step(s);
+}
+
+std::optional<BarDecision> HighJumpReferee::official_step(const BarStep& s) {
+  const bool crossed = s.root_prev.x() < 0 && s.root.x() >= 0;
+  if (crossed && s.root.z() > s.bar_height && std::abs(s.root.y()) < 0.5 * rules_.upright_gap)
+    over_ = true;
+  if (s.touched_beyond && !over_) return decide(false, "touched_beyond");
+  if (over_) {
+    if (s.touched_beyond && !landed_at_) landed_at_ = s.t;
+    if (landed_at_ && s.t - *landed_at_ >= rules_.settle_s) return decide(true, "");
+    return std::nullopt;
+  }
+  if (s.down) return decide(false, "fell");
+  if (s.t > rules_.attempt_s) return decide(false, "time");
+  return std::nullopt;
+}
+
+std::optional<BarDecision> HighJumpReferee::paper_step(const BarStep& s) {
+  if (s.min_body_x > 0.1) return decide(true, "");
+  if (s.down) return decide(false, "fell");
+  // The run-up area (the seed names one without its bounds): from 2 m behind the start mark
+  // to 4 m past the bar, 2 m beyond the uprights on either side and behind the start.
+  const double start_x = -rules_.bar_x, start_y = -rules_.bar_y;
+  const double side = 0.5 * rules_.upright_gap + 2.0;
+  if (s.root.x() < start_x - 2 || s.root.x() > 4 || s.root.y() < std::min(start_y - 2, -side) ||
+      s.root.y() > std::max(start_y + 2, side))
+    return decide(false, "left_area");
+  if (s.t > rules_.attempt_s) return decide(false, "time");
+  return std::nullopt;
+}
+
+}  // namespace olympics::sports::high_jump

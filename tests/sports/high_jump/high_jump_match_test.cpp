@@ -1,0 +1,123 @@
+// Whole high-jump matches in process with scripted set-ups: the crossbar rests on its supports
+// and falls when knocked (a failure); a body that goes over cleanly and lands on the soft mat
+// clears; the mat gives under a landing as the ground does not.
+#include "high_jump/high_jump_match.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "../athletics/field_event_session.h"
+#include "high_jump/high_jump_sport.h"
+
+namespace olympics::sports::high_jump {
+namespace {
+
+using Session = athletics::FieldEventSession<HighJumpMatch, HighJumpSport>;
+using athletics::give_velocity;
+
+Session start(const std::string& mode, const nlohmann::json& options) {
+  return Session("high_jump", mode, options);
+}
+
+const nlohmann::json kOfficial = {{"rules", "official"}, {"bar_height", 0.5}};
+
+TEST(HighJumpMatch, TheBarRestsOnItsSupportsUntouched) {
+  Session r = start("solo", kOfficial);
+  const Eigen::Vector3d rest = r.match->bar(0).position();
+  for (int i = 0; i < 60; ++i) r.step();  // 2 s, the athlete standing 20 m away
+  EXPECT_TRUE(r.match->bar(0).in_place());
+  EXPECT_LT((r.match->bar(0).position() - rest).norm(), 0.005);
+}
+
+TEST(HighJumpMatch, ABarKnockedFallsAndTheAttemptFails) {
+  for (const auto& options : {kOfficial, nlohmann::json{{"bar_height", 0.5}}}) {
+    Session r = start("solo", options);
+    dBodySetLinearVel(r.match->bar(0).body(), 1.0, 0, 0);  // knocked toward the mat
+    const auto e = r.wait_for("failure", 30);
+    ASSERT_FALSE(e.is_null()) << options;
+    EXPECT_EQ(e["reason"], "bar_dislodged");
+    EXPECT_DOUBLE_EQ(e["height"].get<double>(), 0.5);
+  }
+}
+
+// The installation alone: the official bar stays on its supports for seconds untouched, and a
+// knock sends it off them down to the ground.
+TEST(Crossbar, RestsUntouchedAndFallsWhenKnocked) {
+  core::PhysicsWorld world;
+  HighJumpRules rules;
+  rules.bar_length = 4.0, rules.bar_radius = 0.015, rules.bar_mass = 2.0;
+  rules.support_depth = 0.04, rules.support_length = 0.06;
+  Crossbar bar(world, rules, 0.0, 0.0, 1.2);
+  EXPECT_NEAR(bar.end(-1).y(), -2.0, 1e-9);
+  EXPECT_NEAR(bar.end(1).z(), 1.2 - 0.015, 1e-9) << "the bar's top at the height";
+  const double dt = 1.0 / 120;
+  for (int i = 0; i < 360; ++i) world.step(dt);
+  EXPECT_TRUE(bar.in_place());
+  EXPECT_NEAR(bar.position().z(), 1.2 - 0.015, 0.003);
+  dBodySetLinearVel(bar.body(), 0.5, 0, 0);  // a light knock across the supports
+  for (int i = 0; i < 120; ++i) world.step(dt);
+  EXPECT_FALSE(bar.in_place());
+  EXPECT_LT(bar.position().z(), 0.05) << "down on the ground";
+  bar.set(1.3);  // put back, a height up
+  EXPECT_TRUE(bar.in_place());
+  EXPECT_NEAR(bar.position().z(), 1.3 - 0.015, 1e-9);
+}
+
+TEST(HighJumpMatch, ABodyOverTheBarCleanlyIsAClearance) {
+  Session r = start("solo", kOfficial);
+  core::Humanoid& h = r.match->athlete(0);
+  const double bar_y = r.match->rules().bar_y;
+  // Upright, its feet well above the 0.5 m bar, moving over it toward the mat.
+  h.reset({{19.5, bar_y, 2.1}, 0});
+  give_velocity(h, {3.0, 0, 0});
+  const auto e = r.wait_for("cleared", 120);
+  ASSERT_FALSE(e.is_null()) << "no clearance";
+  EXPECT_DOUBLE_EQ(e["height"].get<double>(), 0.5);
+  EXPECT_TRUE(r.match->bar(0).in_place());
+  EXPECT_DOUBLE_EQ(r.match->series(0).best(), 0.5);
+  EXPECT_DOUBLE_EQ(r.match->series(0).bar_height(), 0.55) << "the bar goes up by the raise";
+  EXPECT_DOUBLE_EQ(r.match->bar(0).height(), 0.55);
+}
+
+TEST(HighJumpMatch, PaperClearsOnceEveryBodyIsPastTheBar) {
+  Session r = start("solo", {{"bar_height", 0.5}});
+  core::Humanoid& h = r.match->athlete(0);
+  h.reset({{19.5, r.match->rules().bar_y, 2.1}, 0});
+  give_velocity(h, {3.0, 0, 0});
+  const auto e = r.wait_for("cleared", 60);
+  ASSERT_FALSE(e.is_null());
+  EXPECT_TRUE(r.match->outcome().match_over) << "one height, one try: the seed's episode";
+}
+
+TEST(HighJumpMatch, RunningUnderTheBarFails) {
+  Session r = start("solo", {{"rules", "official"}, {"bar_height", 2.0}});
+  core::Humanoid& h = r.match->athlete(0);
+  h.reset({{19.5, r.match->rules().bar_y, 1.2}, 0});  // the head below the 2 m bar
+  give_velocity(h, {3.0, 0, 0});
+  const auto e = r.wait_for("failure", 60);
+  ASSERT_FALSE(e.is_null());
+  EXPECT_EQ(e["reason"], "touched_beyond");
+}
+
+TEST(HighJumpMatch, TheSoftMatGivesUnderALanding) {
+  Session r = start("solo", kOfficial);
+  core::Humanoid& h = r.match->athlete(0);
+  const double bar_y = r.match->rules().bar_y;
+  h.reset({{22.0, bar_y, kMatHeight + 1.5}, 0});  // dropped flat-footed onto the mat
+  double lowest = 1e9;                            // the lowest point of any of its geoms
+  for (int i = 0; i < 45; ++i) {
+    r.step();
+    for (int b = 0; b < h.body_count(); ++b)
+      for (dGeomID g = dBodyGetFirstGeom(h.ode_body(b)); g; g = dBodyGetNextGeom(g)) {
+        dReal aabb[6];
+        dGeomGetAABB(g, aabb);
+        lowest = std::min(lowest, static_cast<double>(aabb[4]));
+      }
+  }
+  EXPECT_LT(lowest, kMatHeight - 0.03) << "the feet sank into the foam";
+  EXPECT_GT(lowest, 0.2) << "and the mat held them";
+}
+
+}  // namespace
+}  // namespace olympics::sports::high_jump
