@@ -182,6 +182,7 @@ void MatchRuntime::on_join(const olympics::join_t& join, Clock::time_point now) 
       return refuse("BAD_REQUEST",
                     "this client already joined slots that differ from this request");
     reply.accepted = true;
+    if (!may_answer(existing, now)) return;  // asked again and again: answered a few times a second
     return send(protocol::kJoinReply, reply);
   }
   for (size_t i = 0; i < wanted.size(); ++i) {

@@ -26,11 +26,23 @@ std::string new_secret(const std::string& dir) {
   return dir + "/secret";
 }
 
-// An attacker without the secret: records the datagrams on the channels it is told and sends
-// them again, unchanged, when asked (or by itself, `delay` after each was sent).
+// An attacker without the secret: records the datagrams on the channels it is given (LCM
+// patterns) and sends them again, unchanged, when asked, or by itself `delay` after each was sent.
 class Replayer {
  public:
-  explicit Replayer(const std::string& url) : transport_(protocol::TransportOptions(url)) {
+  Replayer(const std::string& url, const std::vector<std::string>& channels,
+           std::optional<Clock::duration> delay = std::nullopt)
+      : transport_(protocol::TransportOptions(url)) {
+    // Subscribed before its thread handles anything: LCM starts listening at the first
+    // subscription, which must not race a handle().
+    for (const auto& channel : channels)
+      transport_.subscribe(channel,
+                           [this, delay](const std::string& ch, const std::uint8_t* d, int n) {
+                             std::lock_guard lock(mutex_);
+                             if (!recording_) return;
+                             captured_.push_back({ch, std::vector<std::uint8_t>(d, d + n)});
+                             if (delay) due_.push_back({Clock::now() + *delay, captured_.back()});
+                           });
     thread_ = std::thread([this] {
       while (running_) {
         transport_.handle(2);
@@ -41,17 +53,6 @@ class Replayer {
   ~Replayer() {
     running_ = false;
     thread_.join();
-  }
-  // Records what comes on `channel` (an LCM pattern); with `delay`, sends each again that late.
-  void record(const std::string& channel, std::optional<Clock::duration> delay = std::nullopt) {
-    std::lock_guard lock(mutex_);
-    transport_.subscribe(channel,
-                         [this, delay](const std::string& ch, const std::uint8_t* d, int n) {
-                           std::lock_guard lock(mutex_);
-                           if (!recording_) return;
-                           captured_.push_back({ch, std::vector<std::uint8_t>(d, d + n)});
-                           if (delay) due_.push_back({Clock::now() + *delay, captured_.back()});
-                         });
   }
   void stop_recording() {
     std::lock_guard lock(mutex_);
@@ -129,9 +130,9 @@ std::string key(const std::vector<float>& action) {
 TEST(ReplayAttack, ReplayedRealtimeActionsAreNeverApplied) {
   const std::string dir = temp_dir(), secret = new_secret(dir);
   ServerFixture server({"--secret", secret});
-  Replayer attacker(server.url());
   // Each action again 10 ticks (1/3 s) late, as the red team did.
-  attacker.record(std::string(protocol::kActPrefix) + ".*", std::chrono::milliseconds(333));
+  Replayer attacker(server.url(), {std::string(protocol::kActPrefix) + ".*"},
+                    std::chrono::milliseconds(333));
   std::string out;
   // Soccer: a match that lasts its time limit whatever the players do.
   ASSERT_EQ(play(server, secret, "rt",
@@ -168,8 +169,7 @@ TEST(ReplayAttack, ReplayedRealtimeActionsAreNeverApplied) {
 
 TEST(ReplayAttack, AnnouncementsOfAnEarlierBootEndNoMatch) {
   const std::string url = unique_lcm_url(), dir = temp_dir(), secret = new_secret(dir);
-  Replayer attacker(url);
-  attacker.record(protocol::kAnnounce);
+  Replayer attacker(url, {protocol::kAnnounce});
   {
     ServerFixture before({"--secret", secret}, url, "", "alpha");
     while (attacker.captured().size() < 2)
@@ -198,12 +198,11 @@ TEST(ReplayAttack, AnnouncementsOfAnEarlierBootEndNoMatch) {
 
 TEST(ReplayAttack, AStoppedServersAnnouncementsDoNotSilenceTheLiveOne) {
   const std::string url = unique_lcm_url(), dir = temp_dir(), secret = new_secret(dir);
-  Replayer attacker(url);
+  Replayer attacker(url, {protocol::kAnnounce});
   ServerFixture bbb({"--secret", secret}, url, "", "bbb");
   {
     ServerFixture aaa({"--secret", secret}, url, "", "aaa");  // sorts first: takes requests
-    attacker.record(protocol::kAnnounce);
-    while (attacker.captured().size() < 4)
+    while (attacker.captured().size() < 6)
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
     attacker.stop_recording();
   }
@@ -225,8 +224,7 @@ TEST(ReplayAttack, AStoppedServersAnnouncementsDoNotSilenceTheLiveOne) {
 
 TEST(ReplayAttack, OldRequestsReplayedToARestartedServerMakeNoMatch) {
   const std::string url = unique_lcm_url(), dir = temp_dir(), secret = new_secret(dir);
-  Replayer attacker(url);
-  attacker.record(protocol::kRequest);
+  Replayer attacker(url, {protocol::kRequest});
   {
     ServerFixture first({"--secret", secret, "--capacity", "1"}, url, "", "alpha");
     ASSERT_EQ(play(first, secret, "old", {"--time-limit", "1", "--server", "alpha"}), 0);
@@ -288,10 +286,8 @@ class ReplyCounter {
 TEST(ReplayAttack, NoAnswerToUnauthenticatedOrReplayedInputIsBiggerThanIt) {
   const std::string dir = temp_dir(), secret = new_secret(dir);
   ServerFixture server({"--secret", secret}, unique_lcm_url(), "", "alpha");
-  Replayer attacker(server.url());
-  for (const char* ch : {protocol::kRequest, protocol::kJoin, protocol::kHeartbeat})
-    attacker.record(ch);
-  attacker.record(std::string(protocol::kActPrefix) + ".*");
+  Replayer attacker(server.url(), {protocol::kRequest, protocol::kJoin, protocol::kHeartbeat,
+                                   std::string(protocol::kActPrefix) + ".*"});
   ASSERT_EQ(play(server, secret, "done", {"--time-limit", "1", "--server", "alpha"}), 0);
   attacker.stop_recording();
   const auto captured = attacker.captured();
