@@ -21,12 +21,11 @@
 namespace olympics::protocol {
 namespace {
 
-std::array<unsigned char, kSignatureBytes> hmac(const unsigned char* key, int key_size,
-                                                const unsigned char* data, size_t size) {
-  std::array<unsigned char, kSignatureBytes> out{};
+std::array<unsigned char, kMacBytes> hmac(const unsigned char* key, int key_size,
+                                          const unsigned char* data, size_t size) {
+  std::array<unsigned char, kMacBytes> out{};
   unsigned int length = 0;
-  if (!HMAC(EVP_sha256(), key, key_size, data, size, out.data(), &length) ||
-      length != kSignatureBytes)
+  if (!HMAC(EVP_sha256(), key, key_size, data, size, out.data(), &length) || length != kMacBytes)
     throw std::runtime_error("HMAC-SHA256 failed (OpenSSL)");
   return out;
 }
@@ -96,21 +95,20 @@ Authenticator Authenticator::from_file(const std::string& path) {
   return Authenticator(secret);
 }
 
-std::array<unsigned char, kSignatureBytes> Authenticator::mac(Role role, const std::string& channel,
-                                                              const std::uint8_t* bytes,
-                                                              int size) const {
-  // channel, a NUL, then the message with its signature field zeroed
-  static const unsigned char zeros[kSignatureBytes + 1] = {};
+std::array<unsigned char, kMacBytes> Authenticator::mac(Role role, const std::string& channel,
+                                                        const std::uint8_t* bytes, int size) const {
+  // channel, a NUL, then the message (its freshness included) with the MAC's bytes zeroed
+  static const unsigned char zeros[kMacBytes + 1] = {};
   EVP_MAC_CTX* ctx = EVP_MAC_CTX_dup(static_cast<EVP_MAC_CTX*>(keyed_[static_cast<int>(role)]));
-  std::array<unsigned char, kSignatureBytes> out{};
+  std::array<unsigned char, kMacBytes> out{};
   size_t length = 0;
   const bool ok =
       ctx &&
       EVP_MAC_update(ctx, reinterpret_cast<const unsigned char*>(channel.data()), channel.size()) &&
       EVP_MAC_update(ctx, zeros, 1) &&
-      EVP_MAC_update(ctx, bytes, static_cast<size_t>(size - kSignatureBytes)) &&
-      EVP_MAC_update(ctx, zeros, kSignatureBytes) &&
-      EVP_MAC_final(ctx, out.data(), &length, out.size()) && length == kSignatureBytes;
+      EVP_MAC_update(ctx, bytes, static_cast<size_t>(size - kMacBytes)) &&
+      EVP_MAC_update(ctx, zeros, kMacBytes) &&
+      EVP_MAC_final(ctx, out.data(), &length, out.size()) && length == kMacBytes;
   EVP_MAC_CTX_free(ctx);
   if (!ok) throw std::runtime_error("HMAC-SHA256 failed (OpenSSL)");
   return out;
@@ -119,13 +117,13 @@ std::array<unsigned char, kSignatureBytes> Authenticator::mac(Role role, const s
 void Authenticator::sign(const std::string& channel, std::uint8_t* bytes, int size) const {
   if (size < kSignatureBytes + 8) return;  // not one of our messages
   const auto m = mac(sender_of(channel), channel, bytes, size);
-  std::memcpy(bytes + size - kSignatureBytes, m.data(), kSignatureBytes);
+  std::memcpy(bytes + size - kMacBytes, m.data(), kMacBytes);
 }
 
 bool Authenticator::verify(const std::string& channel, const std::uint8_t* bytes, int size) const {
   if (!bytes || size < kSignatureBytes + 8) return false;
   const auto m = mac(sender_of(channel), channel, bytes, size);
-  return CRYPTO_memcmp(m.data(), bytes + size - kSignatureBytes, kSignatureBytes) == 0;
+  return CRYPTO_memcmp(m.data(), bytes + size - kMacBytes, kMacBytes) == 0;
 }
 
 std::shared_ptr<const Authenticator> load_secret(const std::string& path) {

@@ -1,9 +1,12 @@
 // Message authentication (docs/security.md). A deployment's secret lives in a file that never
 // goes on the wire; from it each side derives one HMAC-SHA256 key per sender role. Every message
-// ends with a 32-byte `signature` field: the HMAC, under the sender's role key, of the channel's
-// name and the encoded message with that field zeroed. Signing takes the channel, so a message
-// cannot be moved to another channel; its content names the match, client, slots and tick, so a
-// copied client id or a datagram replayed into another match or tick is of no use.
+// ends with a 56-byte `signature` field: the sender's freshness (its boot id, a sequence number
+// and the send time, freshness.h) and then the HMAC, under the sender's role key, of the
+// channel's name and the encoded message with the HMAC's 32 bytes zeroed (so the freshness is
+// signed too). Signing takes the channel, so a message cannot be moved to another channel; its
+// content names the match, client, slots and tick, so a copied client id or a datagram replayed
+// into another match or tick is of no use; the freshness makes a replay into the same one
+// recognisable (freshness.h).
 #pragma once
 
 #include <array>
@@ -17,7 +20,10 @@ namespace olympics::protocol {
 // or clients (requests, joins, actions, heartbeats; agents, trainers and leagues alike).
 enum class Role { Server, Client };
 Role sender_of(const std::string& channel);
-inline constexpr int kSignatureBytes = 32;
+// The whole trailer (`signature` field): freshness, then the MAC.
+inline constexpr int kFreshnessBytes = 24;
+inline constexpr int kMacBytes = 32;
+inline constexpr int kSignatureBytes = kFreshnessBytes + kMacBytes;
 
 class Authenticator {
  public:
@@ -30,14 +36,15 @@ class Authenticator {
   // than 16 bytes, or readable by other users.
   static Authenticator from_file(const std::string& path);
 
-  // Signs an encoded message of ours in place: its last 32 bytes are its signature field.
+  // Signs an encoded message of ours in place: its last 32 bytes get the MAC of the rest (the
+  // freshness before them is filled in by the caller, Transport).
   void sign(const std::string& channel, std::uint8_t* bytes, int size) const;
   // Whether an encoded message carries a valid signature for its channel.
   bool verify(const std::string& channel, const std::uint8_t* bytes, int size) const;
 
  private:
-  std::array<unsigned char, kSignatureBytes> mac(Role role, const std::string& channel,
-                                                 const std::uint8_t* bytes, int size) const;
+  std::array<unsigned char, kMacBytes> mac(Role role, const std::string& channel,
+                                           const std::uint8_t* bytes, int size) const;
   // Per role, an HMAC context keyed once; each message is signed on a copy of it.
   std::array<void*, 2> keyed_{nullptr, nullptr};  // EVP_MAC_CTX*, by Role
 };

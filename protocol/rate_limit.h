@@ -29,4 +29,28 @@ class RateLimiter {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
+// At most one log line a second for one kind of event, so that a flood of bad or replayed
+// datagrams cannot fill a disk with lines: note() counts an event and, when a line is due, says
+// how many it covers (the events suppressed since the last line, this one included); 0 else.
+class LogThrottle {
+ public:
+  long note() {
+    std::lock_guard lock(mutex_);
+    ++pending_;
+    const auto now = std::chrono::steady_clock::now();
+    if (logged_once_ && now - last_ < std::chrono::seconds(1)) return 0;
+    logged_once_ = true;
+    last_ = now;
+    const long n = pending_;
+    pending_ = 0;
+    return n;
+  }
+
+ private:
+  std::mutex mutex_;
+  long pending_ = 0;
+  bool logged_once_ = false;
+  std::chrono::steady_clock::time_point last_{};
+};
+
 }  // namespace olympics::protocol

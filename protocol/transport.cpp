@@ -1,6 +1,7 @@
 #include "transport.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 
 #include "channels.h"
@@ -8,7 +9,14 @@
 namespace olympics::protocol {
 namespace {
 constexpr int kQueueCapacity = 100000;
+
+std::uint64_t random_boot() {
+  std::random_device rd;
+  std::uint64_t boot = 0;
+  while (boot == 0) boot = (static_cast<std::uint64_t>(rd()) << 32) ^ rd();
+  return boot;
 }
+}  // namespace
 
 struct Transport::Subscription {
   Transport* transport = nullptr;
@@ -17,21 +25,31 @@ struct Transport::Subscription {
   void on_message(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
     const auto* data = static_cast<const std::uint8_t*>(rbuf->data);
     const int size = static_cast<int>(rbuf->data_size);
-    if (transport->auth_ && !transport->auth_->verify(channel, data, size)) {
-      ++transport->unauthenticated_;
-      if (transport->on_unauthenticated_) transport->on_unauthenticated_(channel, data, size);
-      return;
-    }
-    handler(channel, data, size);
+    // LCM hands one datagram to every subscription its channel matches, within one handle():
+    // it is checked (and counted) once.
+    auto& verdict = transport->dispatch_verdict_;
+    if (!verdict) verdict = transport->admit(channel, data, size);
+    if (*verdict) handler(channel, data, size);
   }
 };
+
+bool Transport::admit(const std::string& channel, const std::uint8_t* data, int size) {
+  if (!auth_) return true;
+  if (!auth_->verify(channel, data, size)) {
+    ++unauthenticated_;
+    if (on_unauthenticated_) on_unauthenticated_(channel, data, size);
+    return false;
+  }
+  return fresh(data, size);  // no answer to a replay
+}
 
 Transport::Transport(const TransportOptions& options)
     : url_(options.url.empty() ? kDefaultLcmUrl : options.url),
       lcm_(url_),
       drop_rate_(options.drop_rate),
       drop_rng_(options.drop_seed),
-      auth_(options.auth) {
+      auth_(options.auth),
+      boot_(random_boot()) {
   if (!(drop_rate_ >= 0 && drop_rate_ < 1))  // NaN too: it would drop nothing, silently
     throw std::invalid_argument("the test drop rate (--drop-rate) must be in [0, 1), got " +
                                 std::to_string(drop_rate_));
@@ -75,8 +93,10 @@ void Transport::send(const std::string& channel, const std::uint8_t* data, int s
     ++dropped_;
     return;
   }
-  if (auth_ && sign) {
+  if (auth_ && sign && size >= kSignatureBytes) {
     signing_buffer_.assign(data, data + size);
+    write_freshness(signing_buffer_.data() + size - kSignatureBytes,
+                    {boot_, next_seq_++, wall_clock_ms()});
     auth_->sign(channel, signing_buffer_.data(), size);
     data = signing_buffer_.data();
   }
@@ -100,6 +120,34 @@ int multicast_ttl(const std::string& url) {
   return 0;
 }
 
-bool Transport::handle(int timeout_ms) { return lcm_.handleTimeout(timeout_ms) > 0; }
+bool Transport::fresh(const std::uint8_t* data, int size) {
+  const Freshness f = read_freshness(data + size - kSignatureBytes);  // verified: size fits
+  switch (windows_.admit(f, wall_clock_ms())) {
+    case ReplayWindows::Verdict::Fresh:
+      return true;
+    case ReplayWindows::Verdict::Replayed:
+      ++replayed_;
+      if (const long n = replay_log_.note())
+        std::fprintf(
+            stderr, "[transport] dropped %ld replayed message(s) (taken here before; %ld in all)\n",
+            n, replayed_.load());
+      return false;
+    case ReplayWindows::Verdict::Stale:
+      ++stale_;
+      if (const long n = stale_log_.note())
+        std::fprintf(stderr,
+                     "[transport] dropped %ld message(s) sent more than %lld s ago or ahead by "
+                     "their sender's clock (%ld in all): replays, or hosts whose clocks are apart "
+                     "(keep them in step, e.g. NTP)\n",
+                     n, static_cast<long long>(kMaxMessageAgeMs / 1000), stale_.load());
+      return false;
+  }
+  return false;
+}
+
+bool Transport::handle(int timeout_ms) {
+  dispatch_verdict_.reset();
+  return lcm_.handleTimeout(timeout_ms) > 0;
+}
 
 }  // namespace olympics::protocol

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "auth.h"
+#include "freshness.h"
 #include "rate_limit.h"
 #include "wire_check.h"
 
@@ -30,8 +31,9 @@ struct TransportOptions {
   double drop_rate = 0.0;  // test flag: share of published messages silently dropped
   std::uint64_t drop_seed = 1;
   // With a deployment secret, every message sent is signed and every message received must be:
-  // unsigned and forged ones are dropped and counted (unauthenticated()). Without one, nothing is
-  // signed or checked (loopback experiments only).
+  // unsigned and forged ones are dropped and counted (unauthenticated()), and so are signed ones
+  // received before or sent too long ago (replayed(), stale(); freshness.h). Without one,
+  // nothing is signed or checked (loopback experiments only).
   std::shared_ptr<const Authenticator> auth;
 };
 
@@ -72,6 +74,12 @@ class Transport {
   long malformed() const { return malformed_; }
   // Received messages dropped for a missing or wrong signature (with a secret only).
   long unauthenticated() const { return unauthenticated_; }
+  // Signed messages dropped because this process took them already (or one so much newer from
+  // the same sender that the old one is out of its window): replays (with a secret only).
+  long replayed() const { return replayed_; }
+  // Signed messages dropped because they were sent more than kMaxMessageAgeMs ago (or ahead) by
+  // their sender's clock: replays of old traffic, or hosts whose clocks are apart.
+  long stale() const { return stale_; }
   bool authenticating() const { return auth_ != nullptr; }
   // Called (on the receiving thread) for each unauthenticated message dropped.
   void on_unauthenticated(RawHandler handler) { on_unauthenticated_ = std::move(handler); }
@@ -89,10 +97,20 @@ class Transport {
   std::mt19937_64 drop_rng_;
   std::mutex publish_mutex_;
   std::atomic<long> published_{0}, dropped_{0}, malformed_{0}, unauthenticated_{0};
+  std::atomic<long> replayed_{0}, stale_{0};
   std::shared_ptr<const Authenticator> auth_;
   RawHandler on_unauthenticated_;
   std::vector<std::uint8_t> signing_buffer_;  // under publish_mutex_
+  const std::uint64_t boot_;                  // this process's sender id (freshness.h)
+  std::uint64_t next_seq_ = 1;                // under publish_mutex_
   void send(const std::string& channel, const std::uint8_t* data, int size, bool sign);
+  // Whether a received datagram may reach the handlers: with a secret, signed and fresh
+  // (freshness.h); dropped and counted else.
+  bool admit(const std::string& channel, const std::uint8_t* data, int size);
+  bool fresh(const std::uint8_t* data, int size);
+  ReplayWindows windows_;
+  std::optional<bool> dispatch_verdict_;  // admit() of the datagram handle() dispatches now
+  LogThrottle replay_log_, stale_log_;
   std::vector<std::unique_ptr<Subscription>> subscriptions_;
   RateLimiter complaints_{20};
 };

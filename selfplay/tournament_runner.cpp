@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "channels.h"
+#include "match_id.h"
 #include "olympics/error_t.hpp"
 #include "olympics/heartbeat_t.hpp"
 #include "olympics/league_assignment_t.hpp"
@@ -70,7 +71,7 @@ TournamentRunner::TournamentRunner(LeagueStore& store, TournamentSpec spec, Runn
   // which the server answers with the same match) and restart their policy workers (a slot that
   // an old worker still plays refuses the new one, which then just exits).
   for (auto& g : games_)
-    if (g.status == GameStatus::Dispatched) in_flight_[g.index];
+    if (g.status == GameStatus::Dispatched) in_flight_[g.index].dispatched = Clock::now();
 }
 
 TournamentRunner::~TournamentRunner() = default;
@@ -94,7 +95,29 @@ void TournamentRunner::on_announce(const olympics::server_announce_t& announce) 
     other_servers_[announce.server_id] = offered;
     return;
   }
-  servers_[announce.server_id] = {Clock::now(), announce.capacity - announce.active_matches};
+  auto& server = servers_[announce.server_id];
+  const std::int64_t boot_ms = announce.boot_us / 1000;
+  if (boot_ms < server.boot_ms) return;  // an earlier boot's announcement: a replay
+  server.seen = Clock::now();
+  server.free = announce.capacity - announce.active_matches;
+  server.boot_ms = boot_ms;
+  replay_games_of_earlier_boots(announce.server_id, boot_ms);
+}
+
+void TournamentRunner::replay_games_of_earlier_boots(const std::string& server,
+                                                     std::int64_t boot_ms) {
+  for (auto& g : games_) {
+    if (g.status != GameStatus::Dispatched || g.server_id != server || g.match_id.empty()) continue;
+    const auto match_boot = protocol::match_boot_ms(g.match_id);
+    if (match_boot && *match_boot < boot_ms)
+      return retry(g, "server " + server + " restarted: match " + g.match_id +
+                          " of its earlier run was aborted");  // in_flight_ changed: next time
+  }
+}
+
+bool TournamentRunner::usable(const Server& s, Clock::time_point now) const {
+  return now - s.seen <= std::chrono::duration<double>(settings_.server_silence_s) &&
+         now >= s.shunned_until;
 }
 
 // Asks the scheduler for more games when another could start; false once it has finished and
@@ -137,7 +160,7 @@ void TournamentRunner::dispatch() {
     std::string best;
     int room = 0;
     for (auto& [id, s] : servers_) {
-      if (now - s.seen > std::chrono::duration<double>(settings_.server_silence_s)) continue;
+      if (!usable(s, now)) continue;
       if (s.free > room) best = id, room = s.free;
     }
     if (best.empty()) return;
@@ -147,7 +170,7 @@ void TournamentRunner::dispatch() {
     g.request_id = spec_.name + "-g" + std::to_string(g.index) + "-a" + std::to_string(g.attempt);
     g.match_id.clear();
     save(g);  // before asking, so a restart asks again with the same id
-    in_flight_[g.index];
+    in_flight_[g.index].dispatched = now;
   }
 }
 
@@ -169,6 +192,18 @@ void TournamentRunner::keep_in_touch() {
         server != servers_.end() ? now - server->second.seen > silence : now - started_ > silence;
     if (gone) {
       retry(g, "server " + g.server_id + " stopped announcing");
+      return;  // in_flight_ changed
+    }
+    // A live server that does not answer (it hears some messages only, or is stuck): another
+    // one gets the game, and this one none for a while.
+    const auto wait = std::chrono::duration<double>(settings_.server_wait_s);
+    if (f.slot_teams.empty() && f.dispatched != Clock::time_point{} && now - f.dispatched > wait) {
+      if (server != servers_.end())
+        server->second.shunned_until = now + std::chrono::duration_cast<Clock::duration>(2 * wait);
+      retry(g, "server " + g.server_id + " announces itself but did not answer the request for " +
+                   "game " + std::to_string(g.index) + " in " +
+                   std::to_string(static_cast<int>(settings_.server_wait_s)) +
+                   " s (--server-wait-s); no game goes to it for twice as long");
       return;  // in_flight_ changed
     }
     // Until the server has described the match (also after a restart of the league), ask again:
@@ -347,9 +382,8 @@ void TournamentRunner::refuse_if_no_server_offers_the_sport() {
 // exist, or their announcements fail the signature check. Waiting on in silence helps nobody.
 void TournamentRunner::stop_if_no_server_is_heard() {
   const auto now = Clock::now();
-  const auto silence = std::chrono::duration<double>(settings_.server_silence_s);
   for (const auto& [id, s] : servers_)
-    if (now - s.seen <= silence) last_server_heard_ = now;
+    if (usable(s, now)) last_server_heard_ = now;
   if (now - last_server_heard_ < std::chrono::duration<double>(settings_.server_wait_s)) return;
   std::string named;
   for (const auto& id : settings_.servers) named += (named.empty() ? "" : ", ") + id;
@@ -357,6 +391,15 @@ void TournamentRunner::stop_if_no_server_is_heard() {
                     " announced itself on " + transport_.url() + " for " +
                     std::to_string(static_cast<int>(settings_.server_wait_s)) +
                     " s; is olympics-server running there (olympics-server serve --id ID)?";
+  std::string mute;
+  for (const auto& [id, s] : servers_)
+    if (now < s.shunned_until) mute += (mute.empty() ? "" : ", ") + id;
+  if (!mute.empty())
+    why = "no server answered the league's requests for " +
+          std::to_string(static_cast<int>(settings_.server_wait_s)) +
+          " s (--server-wait-s): " + mute +
+          " announce(s) themselves but left requests unanswered (a server that hears only some "
+          "messages, or is stuck: see its log)";
   if (transport_.unauthenticated() > 0)
     why += " " + std::to_string(transport_.unauthenticated()) +
            " message(s) heard failed the signature check: the servers may use another secret "

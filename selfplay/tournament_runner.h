@@ -29,7 +29,8 @@ struct RunnerSettings {
   std::string agent_program;         // path of olympics-agent
   std::string log_dir = "/tmp";      // policy workers' output
   double server_silence_s = 5;       // a server not announcing this long is gone
-  double server_wait_s = 60;         // no usable server heard this long: stop, saying so
+  double server_wait_s = 60;         // no usable server heard this long: stop, saying so; a
+                                     // request unanswered this long: another server is tried
   bool progress = true;              // a progress bar on stderr
   std::string secret_file;           // "" = $OLYMPICS_SECRET_FILE, or none; its workers get it too
 };
@@ -52,9 +53,14 @@ class TournamentRunner {
   struct Server {
     Clock::time_point seen;
     int free = 0;
+    std::int64_t boot_ms = 0;  // the newest boot it announced
+    // It announced itself but left a request unanswered for server_wait_s: no game goes to it
+    // for twice that (it may be stuck, or hear only some of what is sent), so that with no other
+    // server the run stops (stop_if_no_server_is_heard) rather than ask it again and again.
+    Clock::time_point shunned_until{};
   };
   struct InFlight {
-    Clock::time_point last_request, last_probe;
+    Clock::time_point dispatched, last_request, last_probe;
     std::vector<int> slot_teams;  // from the server's description of the match
     bool workers_started = false;
     std::vector<std::unique_ptr<Process>> workers;
@@ -75,6 +81,10 @@ class TournamentRunner {
   void assign_live(const Game& game);
   void retry(Game& game, const std::string& why);
   void keep_in_touch();
+  // Games whose match belongs to an earlier boot of `server` than it announces: that boot is
+  // gone and the match was recorded as aborted when the server came back.
+  void replay_games_of_earlier_boots(const std::string& server, std::int64_t boot_ms);
+  bool usable(const Server& s, Clock::time_point now) const;
   void save(const Game& game);
   void show_progress();
   Game* game_by_request(const std::string& request_id);

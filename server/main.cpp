@@ -61,8 +61,11 @@ int serve(server::ServerConfig config) {
         "act for any slot. For loopback experiments only (docs/security.md: --secret)\n");
   std::fflush(stdout);
   host.run(g_stop);
-  std::printf("stopped after %ld matches; refused %ld malformed and %ld unauthenticated messages\n",
-              host.finished_matches(), transport.malformed(), transport.unauthenticated());
+  std::printf(
+      "stopped after %ld matches; refused %ld malformed and %ld unauthenticated messages, "
+      "%ld replayed and %ld stale ones\n",
+      host.finished_matches(), transport.malformed(), transport.unauthenticated(),
+      transport.replayed(), transport.stale());
   return 0;
 }
 

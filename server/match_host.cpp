@@ -8,6 +8,7 @@
 
 #include "bundle.h"
 #include "channels.h"
+#include "match_id.h"
 #include "olympics/action_batch_t.hpp"
 #include "olympics/error_t.hpp"
 #include "olympics/heartbeat_t.hpp"
@@ -20,14 +21,12 @@
 namespace olympics::server {
 namespace {
 constexpr size_t kRememberedResults = 1000;
+// How long a finished match's request id is remembered: well past the age at which any datagram
+// of that request is stale (protocol::kMaxMessageAgeMs), so a replay of it can make no match.
+constexpr double kRequestMemoryS = 6.0 * protocol::kMaxMessageAgeMs / 1000;
+// A sender asking about a finished match is told its end at most this often.
+constexpr double kRetellS = 0.2;
 
-std::string base36(std::uint64_t v) {
-  const char* digits = "0123456789abcdefghijklmnopqrstuvwxyz";
-  std::string out;
-  do out.insert(out.begin(), digits[v % 36]), v /= 36;
-  while (v);
-  return out;
-}
 constexpr double kPeerTimeoutS = 3.0;
 }  // namespace
 
@@ -38,7 +37,7 @@ MatchHost::MatchHost(HostSettings settings, protocol::Transport& transport, Resu
       boot_us_(std::chrono::duration_cast<std::chrono::microseconds>(
                    std::chrono::system_clock::now().time_since_epoch())
                    .count()),
-      boot_tag_(base36(static_cast<std::uint64_t>(boot_us_ / 1000))) {
+      boot_tag_(protocol::boot_tag(boot_us_)) {
   int n = settings_.workers > 0
               ? settings_.workers
               : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
@@ -70,11 +69,36 @@ double MatchHost::worker_cpu_seconds() const {
 
 int MatchHost::active_matches() const { return playing_; }
 
+namespace {
+// `e` with its message cut so that it encodes to at most `limit` bytes; nullopt when even an
+// empty message is too long.
+std::optional<olympics::error_t> fitted(olympics::error_t e, int limit) {
+  const int over = e.getEncodedSize() - limit;
+  if (over <= 0) return e;
+  if (over > static_cast<int>(e.message.size())) return std::nullopt;
+  e.message.resize(e.message.size() - over);
+  return e;
+}
+}  // namespace
+
+void MatchHost::log_error(const std::string& code, const std::string& message) {
+  protocol::LogThrottle* throttle;
+  {
+    std::lock_guard lock(error_logs_mutex_);
+    auto& t = error_logs_[code];
+    if (!t) t = std::make_unique<protocol::LogThrottle>();
+    throttle = t.get();
+  }
+  if (const long n = throttle->note())
+    std::fprintf(
+        stderr, "[server %s] %s: %s%s\n", settings_.server_id.c_str(), code.c_str(),
+        message.c_str(),
+        n > 1 ? (" (and " + std::to_string(n - 1) + " more in the last second)").c_str() : "");
+}
+
 void MatchHost::error(const std::string& match_id, const std::string& client_id,
-                      const std::string& code, const std::string& message, Signing signing) {
-  if ((code == "MALFORMED" || code == "UNAUTHENTICATED" || code == "UNKNOWN_MATCH") &&
-      !transport_.may_complain())
-    return;
+                      const std::string& code, const std::string& message, int answered_bytes) {
+  if ((code == "MALFORMED" || code == "UNKNOWN_MATCH") && !transport_.may_complain()) return;
   olympics::error_t e;
   e.protocol_version = protocol::kProtocolVersion;
   e.server_id = settings_.server_id;
@@ -82,12 +106,20 @@ void MatchHost::error(const std::string& match_id, const std::string& client_id,
   e.client_id = client_id;
   e.code = code;
   e.message = message;
-  std::fprintf(stderr, "[server %s] %s: %s\n", settings_.server_id.c_str(), code.c_str(),
-               message.c_str());
-  if (signing == Signing::Unsigned)
-    transport_.publish_unsigned(protocol::kError, e);
-  else
-    transport_.publish(protocol::kError, e);
+  log_error(code, message);
+  if (answered_bytes <= 0) return transport_.publish(protocol::kError, e);
+  if (auto cut = fitted(std::move(e), answered_bytes)) transport_.publish(protocol::kError, *cut);
+}
+
+void MatchHost::hint(const std::string& code, const std::string& message, int answered_bytes) {
+  log_error(code, message);
+  if (!transport_.may_complain()) return;
+  olympics::error_t e;
+  e.protocol_version = protocol::kProtocolVersion;
+  e.code = code;
+  e.message = message;
+  if (auto cut = fitted(std::move(e), answered_bytes))
+    transport_.publish_unsigned(protocol::kError, *cut);
 }
 
 void MatchHost::run(const std::atomic<bool>& stop) {
@@ -108,21 +140,16 @@ void MatchHost::run(const std::atomic<bool>& stop) {
   remove_unfinished_scene_tracks();
   transport_.subscribe(protocol::kRequest, [this](const std::string&, const std::uint8_t* d,
                                                   int n) { on_request(d, n); });
-  // A client without the deployment's secret learns why it gets no answer. The answer is not
-  // signed: it names ids the sender chose, and a signed one would let anyone end another
-  // client's match or request by naming it (the client would believe its server).
-  transport_.on_unauthenticated([this](const std::string& ch, const std::uint8_t* d, int n) {
-    const std::string why =
-        "this server checks signatures: give the client the deployment's secret (--secret FILE "
-        "or $OLYMPICS_SECRET_FILE); unsigned or forged messages are dropped";
-    if (ch == protocol::kJoin) {
-      if (auto join = protocol::decode<olympics::join_t>(d, n))
-        error(join->match_id, join->client_id, "UNAUTHENTICATED", why, Signing::Unsigned);
-    } else if (ch == protocol::kRequest) {
-      if (auto req = protocol::decode<olympics::match_request_t>(d, n))
-        error("", "", "UNAUTHENTICATED", "request " + req->request_id + ": " + why,
-              Signing::Unsigned);
-    }
+  // A client whose joins or requests fail the signature check (no secret, another one, or
+  // another protocol version) learns so within seconds: a hint, unsigned and naming no ids (a
+  // signed answer naming them would let anyone end another client's request or join), and no
+  // bigger than what it answers. Clients only report it (an outsider can send one too).
+  transport_.on_unauthenticated([this](const std::string& ch, const std::uint8_t*, int n) {
+    if (ch == protocol::kJoin || ch == protocol::kRequest)
+      hint("UNAUTHENTICATED",
+           "signature check failed: another --secret, none, or protocol != " +
+               std::to_string(protocol::kProtocolVersion),
+           n);
   });
   transport_.subscribe_to<olympics::server_announce_t>(
       protocol::kAnnounce,
@@ -135,7 +162,8 @@ void MatchHost::run(const std::atomic<bool>& stop) {
       return error("", "", "MALFORMED",
                    "could not decode a join_t of " + std::to_string(n) +
                        " bytes: truncated, corrupted, or from another protocol version; upgrade "
-                       "the client");
+                       "the client",
+                   n);
     }
     route(join->match_id, ch, d, n, join->client_id);
   });
@@ -215,9 +243,23 @@ void MatchHost::announce() {
   transport_.publish(protocol::kAnnounce, a);
 }
 
+void MatchHost::forget_old_requests() {
+  const auto now = std::chrono::steady_clock::now();
+  while (!finished_requests_.empty() &&
+         now - finished_requests_.front().first > std::chrono::duration<double>(kRequestMemoryS)) {
+    requests_.erase(finished_requests_.front().second);
+    finished_requests_.pop_front();
+  }
+}
+
 void MatchHost::on_announce(const olympics::server_announce_t& a) {
   if (a.server_id == settings_.server_id) return;
   std::lock_guard lock(routes_mutex_);
+  // An announcement of an earlier boot than one heard (a stopped process's, replayed) says
+  // nothing about the server now.
+  auto& boot = peer_boots_[a.server_id];
+  if (a.boot_us < boot) return;
+  boot = a.boot_us;
   peers_[a.server_id] = {std::chrono::steady_clock::now(), a.capacity - a.active_matches};
 }
 
@@ -239,7 +281,8 @@ void MatchHost::on_request(const std::uint8_t* data, int size) {
     transport_.count_malformed();
     return error("", "", "MALFORMED",
                  "could not decode a match_request_t of " + std::to_string(size) +
-                     " bytes: truncated, corrupted, or from another protocol version");
+                     " bytes: truncated, corrupted, or from another protocol version",
+                 size);
   }
   if (!req->server_id.empty() && req->server_id != settings_.server_id) return;
   if (req->server_id.empty() && !should_take_unaddressed_request()) return;
@@ -292,8 +335,7 @@ void MatchHost::on_request(const std::uint8_t* data, int size) {
   {
     std::lock_guard lock(routes_mutex_);
     // The boot in the id keeps ids unique across restarts under the same server id.
-    id.match_id =
-        settings_.server_id + "-" + boot_tag_ + "-" + std::to_string(next_match_number_++);
+    id.match_id = protocol::make_match_id(settings_.server_id, boot_tag_, next_match_number_++);
     worker = next_worker_++ % static_cast<int>(workers_.size());
     routes_[id.match_id] = worker;
     if (!req->request_id.empty()) {
@@ -421,12 +463,12 @@ void MatchHost::on_action_bundle(const std::uint8_t* data, int size) {
     return;
   }
   transport_.count_malformed();
-  if (transport_.may_complain())
-    error("", bundle ? bundle->client_id : "", "MALFORMED",
-          "could not decode a bundle_t of " + std::to_string(size) +
-              " bytes: truncated, corrupted, parts that do not add up, or from another protocol "
-              "version; upgrade the client to protocol " +
-              std::to_string(protocol::kProtocolVersion));
+  error("", bundle ? bundle->client_id : "", "MALFORMED",
+        "could not decode a bundle_t of " + std::to_string(size) +
+            " bytes: truncated, corrupted, parts that do not add up, or from another protocol "
+            "version; upgrade the client to protocol " +
+            std::to_string(protocol::kProtocolVersion),
+        size);
 }
 
 int MatchHost::route(const std::string& match_id, const std::string& channel,
@@ -438,8 +480,13 @@ int MatchHost::route(const std::string& match_id, const std::string& channel,
     if (auto it = routes_.find(match_id); it != routes_.end())
       worker = it->second;
     else if (auto f = finished_.find(match_id); f != finished_.end()) {
-      // Whoever still asks missed the end: its last observation batch again, then the result.
+      // Whoever still asks missed the end: its last observation batch again, then the result;
+      // at most every kRetellS per sender, however often it asks.
       const std::string from = sender(client_id, data, size);
+      const auto now = std::chrono::steady_clock::now();
+      auto [told, first] = f->second.told.try_emplace(from, now);
+      if (!first && now - told->second < std::chrono::duration<double>(kRetellS)) return -1;
+      told->second = now;
       if (auto b = f->second.final_batches.find(from); b != f->second.final_batches.end())
         transport_.publish(f->second.obs_channel, b->second);
       transport_.publish(protocol::kResult, f->second.result);
@@ -576,7 +623,7 @@ void MatchHost::on_finished(MatchRuntime& match) {
   }
   std::lock_guard lock(routes_mutex_);
   routes_.erase(match.match_id());
-  finished_[match.match_id()] = {r, match.description().obs_channel, match.final_batches()};
+  finished_[match.match_id()] = {r, match.description().obs_channel, match.final_batches(), {}};
   finished_order_.push_back(match.match_id());
   if (finished_order_.size() > kRememberedResults) {
     finished_.erase(finished_order_.front());
@@ -584,13 +631,10 @@ void MatchHost::on_finished(MatchRuntime& match) {
     finished_order_.pop_front();
   }
   if (auto it = request_of_match_.find(match.match_id()); it != request_of_match_.end()) {
-    finished_requests_.push_back(it->second);
+    finished_requests_.emplace_back(std::chrono::steady_clock::now(), it->second);
     request_of_match_.erase(it);
-    if (finished_requests_.size() > kRememberedResults) {
-      requests_.erase(finished_requests_.front());
-      finished_requests_.pop_front();
-    }
   }
+  forget_old_requests();
   ++finished_count_;
 }
 

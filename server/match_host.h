@@ -95,11 +95,19 @@ class MatchHost {
   void retire(Worker& worker, std::unique_ptr<MatchRuntime> finished);
   void note_in_progress(const MatchRuntime& match, const MatchIdentity& id);
   void note_players(const MatchRuntime& match);
-  // How an error goes out: signed (an answer to a message of the deployment) or unsigned (an
-  // answer to unauthenticated input, whose ids an outsider chose: see Transport::publish_unsigned).
-  enum class Signing { Signed, Unsigned };
+  // An error, signed. `answered_bytes` > 0: it answers a datagram of that size that did not
+  // decode, and is cut to fit it (or not sent): no answer is bigger than its cause.
   void error(const std::string& match_id, const std::string& client_id, const std::string& code,
-             const std::string& message, Signing signing = Signing::Signed);
+             const std::string& message, int answered_bytes = 0);
+  // The answer to a datagram that failed the signature check (or did not decode): unsigned,
+  // naming none of the ids an outsider could have chosen (so it is no oracle, see
+  // Transport::publish_unsigned), rate-limited, and never more bytes than the datagram it answers
+  // (so it is no amplifier): the message is cut to fit, or nothing goes out.
+  void hint(const std::string& code, const std::string& message, int answered_bytes);
+  // One log line per error code a second at most (a flood of bad input must not fill the disk).
+  void log_error(const std::string& code, const std::string& message);
+  std::map<std::string, std::unique_ptr<protocol::LogThrottle>> error_logs_;  // under its mutex
+  std::mutex error_logs_mutex_;
 
   HostSettings settings_;
   protocol::Transport& transport_;
@@ -110,19 +118,25 @@ class MatchHost {
   mutable std::mutex routes_mutex_;
   std::unordered_map<std::string, int> routes_;  // match id -> worker
   // request id -> created: a resent request gets its match again. Kept while the match plays
-  // and for the last kRememberedResults finished ones (then forgotten: no growth without bound).
+  // and for kRequestMemoryS after it ends; a request datagram older than that is stale
+  // everywhere (freshness.h), so no replay of an old request can make a second match.
   std::map<std::string, olympics::match_created_t> requests_;
   std::unordered_map<std::string, std::string> request_of_match_;  // match id -> request id
-  std::deque<std::string> finished_requests_;
+  std::deque<std::pair<std::chrono::steady_clock::time_point, std::string>> finished_requests_;
+  void forget_old_requests();  // under routes_mutex_
   struct Finished {
     olympics::match_result_t result;
     std::string obs_channel;
     std::map<std::string, olympics::observation_batch_t> final_batches;  // by client id
+    // When each sender was last told the end: a few times a second at most, however often it
+    // asks (a client that missed the end resends every 250 ms at most).
+    std::map<std::string, std::chrono::steady_clock::time_point> told;
   };
   std::map<std::string, Finished> finished_;  // recent matches' ends, to repeat
   std::deque<std::string> finished_order_;
   std::map<std::string, std::pair<std::chrono::steady_clock::time_point, int>>
-      peers_;  // id -> seen, free
+      peers_;                                       // id -> seen, free
+  std::map<std::string, std::int64_t> peer_boots_;  // id -> newest boot announced
   std::atomic<long> finished_count_{0};
   // Matches requested and not yet finished: what counts against the capacity. A match stops
   // counting as soon as it ends, before its result is stored, so that its players' next

@@ -66,6 +66,7 @@ MatchRuntime::MatchRuntime(MatchIdentity identity, RuntimeSettings settings,
   current_.assign(n, std::vector<float>(game_->action_size(), 0.0f));
   pending_ = current_;
   has_pending_.assign(n, 0);
+  newest_action_tick_.assign(n, -1);
 }
 
 template <typename Msg>
@@ -87,9 +88,25 @@ void MatchRuntime::error(const std::string& client_id, const std::string& code,
   e.client_id = client_id;
   e.code = code;
   e.message = message;
-  std::fprintf(stderr, "[%s] %s from %s: %s\n", identity_.match_id.c_str(), code.c_str(),
-               client_id.empty() ? "?" : client_id.c_str(), message.c_str());
+  if (const long n = error_logs_[code].note())
+    std::fprintf(
+        stderr, "[%s] %s from %s: %s%s\n", identity_.match_id.c_str(), code.c_str(),
+        client_id.empty() ? "?" : client_id.c_str(), message.c_str(),
+        n > 1 ? (" (and " + std::to_string(n - 1) + " more in the last second)").c_str() : "");
+  const int c = client_index(client_id);
+  if (c >= 0 && !may_answer(c, Clock::now())) return;
   send(protocol::kError, e);
+}
+
+bool MatchRuntime::may_answer(int c, Clock::time_point now) {
+  Client& k = clients_[c];
+  k.answer_tokens = std::min(
+      kAnswersPerS,
+      k.answer_tokens + kAnswersPerS * std::chrono::duration<double>(now - k.answer_at).count());
+  k.answer_at = now;
+  if (k.answer_tokens < 1) return false;
+  k.answer_tokens -= 1;
+  return true;
 }
 
 // A client whose every slot is done (its humanoids are out) is not waited for: its actions
@@ -171,6 +188,7 @@ void MatchRuntime::on_join(const olympics::join_t& join, Clock::time_point now) 
       return refuse("BAD_REQUEST",
                     "this client already joined slots that differ from this request");
     reply.accepted = true;
+    if (!may_answer(existing, now)) return;  // asked again and again: answered a few times a second
     return send(protocol::kJoinReply, reply);
   }
   for (size_t i = 0; i < wanted.size(); ++i) {
@@ -294,7 +312,9 @@ void MatchRuntime::on_heartbeat(const olympics::heartbeat_t& beat, Clock::time_p
 
 void MatchRuntime::on_actions(const olympics::action_batch_t& batch, Clock::time_point now,
                               bool bundled) {
-  if (phase_ == Phase::Finished) {  // it missed the end: say it again
+  if (phase_ == Phase::Finished) {  // it missed the end: say it again (not over and over)
+    const int k = client_index(batch.client_id);
+    if (k < 0 || !may_answer(k, now)) return;
     if (auto it = final_batches_.find(batch.client_id); it != final_batches_.end())
       send(description_.obs_channel, it->second);
     return publish_result();
@@ -318,6 +338,7 @@ void MatchRuntime::on_actions(const olympics::action_batch_t& batch, Clock::time
                  "action for tick " + std::to_string(batch.tick) + " but the match is at tick " +
                      std::to_string(tick) + "; answer the observation you were sent");
   if (!identity_.realtime && batch.tick < tick) {
+    if (!may_answer(c, now)) return;
     if (batch.tick == tick - 1) {  // a resend: applied already, but the client missed tick t
       publish_observations({c});
       return;
@@ -331,9 +352,14 @@ void MatchRuntime::on_actions(const olympics::action_batch_t& batch, Clock::time
     return error(batch.client_id, "STALE_TICK",
                  "action for tick " + std::to_string(batch.tick) +
                      " is over a second old at tick " + std::to_string(tick) + " and was ignored");
+  // A realtime batch older than one taken for any of its slots came late (or is a replay):
+  // applying it would put an old action back in force.
+  for (int i = 0; i < batch.num_slots; ++i)
+    if (batch.tick < newest_action_tick_[batch.slots[i]]) return;
   for (int i = 0; i < batch.num_slots; ++i) {
     pending_[batch.slots[i]] = batch.actions[i];
     has_pending_[batch.slots[i]] = 1;
+    newest_action_tick_[batch.slots[i]] = batch.tick;
   }
   clients_[c].acted_this_tick = true;
   if (!identity_.realtime && std::all_of(clients_.begin(), clients_.end(), [&](const Client& k) {

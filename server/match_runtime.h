@@ -97,7 +97,14 @@ class MatchRuntime {
     bool acted_this_tick = false;
     bool bundled = false;  // its last actions came in a bundle: so do its observations
     std::int64_t seq = 0;
+    // Answers to what it sends beyond the tick loop (errors, observations shown again): at most
+    // kAnswersPerS a second, in bursts of as many (a token bucket).
+    double answer_tokens = kAnswersPerS;
+    Clock::time_point answer_at{};
   };
+  static constexpr double kAnswersPerS = 20;
+  // Whether client c may be answered now (counts it if so).
+  bool may_answer(int c, Clock::time_point now);
 
   void on_join(const olympics::join_t& join, Clock::time_point now);
   void on_actions(const olympics::action_batch_t& batch, Clock::time_point now, bool bundled);
@@ -140,6 +147,10 @@ class MatchRuntime {
   std::vector<std::vector<float>> current_;  // action applied per slot
   std::vector<std::vector<float>> pending_;  // received for the coming tick
   std::vector<std::uint8_t> has_pending_;
+  // Per slot, the newest tick whose action was taken: an older one (late, or replayed) never
+  // overrides it.
+  std::vector<int> newest_action_tick_;
+  std::map<std::string, protocol::LogThrottle> error_logs_;  // by code: a line a second at most
   Clock::time_point created_at_, started_at_, tick_deadline_, next_resend_, next_realtime_tick_;
   std::chrono::system_clock::time_point started_wall_;
   double resend_gap_s_ = 0.03;  // grows while a tick waits, back to resend_interval_s after it

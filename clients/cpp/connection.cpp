@@ -72,13 +72,14 @@ Connection::Connection(const ClientOptions& options)
                  transport_.url().c_str());
   transport_.subscribe_to<olympics::match_created_t>(
       protocol::kCreated, [this](const std::string&, const olympics::match_created_t& m) {
-        if (pending_requests_.count(m.request_id)) created_[m.request_id] = m;
+        if (pending_requests_.count(m.request_id)) created_[m.request_id] = m, answered_ = true;
       });
   transport_.subscribe_to<olympics::join_reply_t>(
       protocol::kJoinReply, [this](const std::string&, const olympics::join_reply_t& m) {
         if (m.client_id != client_id_) return;
         if (m.accepted && !described_consistently(m.match)) return transport_.count_malformed();
         join_replies_[m.match_id] = {m.accepted != 0, m.reason, m.match};
+        answered_ = true;
       });
   transport_.subscribe_to<olympics::error_t>(
       protocol::kError, [this](const std::string&, const olympics::error_t& m) { on_error(m); });
@@ -116,15 +117,37 @@ Connection::Connection(const ClientOptions& options)
                          });
   transport_.subscribe_to<olympics::server_announce_t>(
       protocol::kAnnounce, [this](const std::string&, const olympics::server_announce_t& a) {
-        if (servers_.size() < kMaxQueued || servers_.count(a.server_id))
-          servers_[a.server_id] = {Clock::now(), a.boot_us};
+        if (!transport_.authenticating() &&
+            std::any_of(std::begin(a.signature), std::end(a.signature),
+                        [](auto b) { return b != 0; }))
+          ++signed_but_unchecked_;
+        if (servers_.size() >= kMaxQueued && !servers_.count(a.server_id)) return;
+        auto [it, first] = servers_.try_emplace(a.server_id, ServerSeen{Clock::now(), a.boot_us});
+        if (!first && a.boot_us >= it->second.boot_us) it->second = {Clock::now(), a.boot_us};
       });
+  // With a secret, the server's hint (unsigned: it names nobody) fails our check; it is still
+  // worth reporting.
+  transport_.on_unauthenticated([this](const std::string& channel, const std::uint8_t* d, int n) {
+    if (channel != protocol::kError) return;
+    if (auto e = protocol::decode<olympics::error_t>(d, n); e && e->code == "UNAUTHENTICATED")
+      ++authentication_hints_;
+  });
+}
+
+void Connection::report_mismatch_if_stuck() {
+  if (mismatch_reported_ || answered_ || !first_sent_ || Clock::now() - *first_sent_ < seconds(1))
+    return;
+  const std::string hint = silence_hint();
+  if (hint.empty()) return;
+  mismatch_reported_ = true;
+  std::fprintf(stderr, "olympics client %s: no answer yet%s\n", client_id_.c_str(), hint.c_str());
 }
 
 void Connection::pump(Clock::time_point until) {
   int ms = static_cast<int>(
       std::chrono::duration_cast<std::chrono::milliseconds>(until - Clock::now()).count());
   transport_.handle(std::max(0, std::min(ms, 10)));
+  report_mismatch_if_stuck();
 }
 
 void Connection::drain() {
@@ -149,6 +172,7 @@ olympics::match_request_t Connection::request_message(const MatchRequest& r,
 
 void Connection::send_request(const olympics::match_request_t& request) {
   pending_requests_.insert(request.request_id);
+  if (!first_sent_) first_sent_ = Clock::now();
   transport_.publish(protocol::kRequest, request);
 }
 
@@ -173,6 +197,10 @@ static bool answers_request(const olympics::error_t& e, const std::string& reque
 // other clients are none of its business; those naming this client with a match it does not
 // hold are counted (ignored_errors()): a server never sends them, so something else did.
 void Connection::on_error(const olympics::error_t& e) {
+  if (e.code == "UNAUTHENTICATED") {  // a hint naming nobody (docs/security.md): report only
+    ++authentication_hints_;
+    return;
+  }
   bool mine = false;
   for (const auto& id : pending_requests_) mine = mine || answers_request(e, id);
   if (e.client_id == client_id_)
@@ -203,6 +231,7 @@ void Connection::send_join(const std::string& match_id, const std::vector<int>& 
   j.num_slots = static_cast<int>(slots.size());
   j.slots = slots;
   listen_for_observations(match_id);
+  if (!first_sent_) first_sent_ = Clock::now();
   transport_.publish(protocol::kJoin, j);
 }
 
@@ -246,8 +275,7 @@ std::optional<olympics::error_t> Connection::fatal_error(const std::string& matc
                                                          bool joining) const {
   for (const auto& e : errors_) {
     if ((e.code == "UNKNOWN_MATCH" || e.code == "STORE_FAILED") && e.match_id == match_id) return e;
-    if (joining &&
-        (e.code == "UNAUTHENTICATED" || e.code == "UPGRADE" || e.code == "UNKNOWN_MATCH") &&
+    if (joining && (e.code == "UPGRADE" || e.code == "UNKNOWN_MATCH") &&
         (e.match_id.empty() || e.match_id == match_id))
       return e;
   }
@@ -313,11 +341,24 @@ std::optional<Assignment> Connection::take_assignment(const std::string& learner
 }
 
 std::string Connection::silence_hint() const {
+  std::string hint;
+  if (authentication_hints_ > 0)
+    hint += "; a server answered UNAUTHENTICATED " + std::to_string(authentication_hints_) +
+            " time(s) (messages from here failed its signature check): this client's secret "
+            "(--secret) is not the server's, or one side runs unsigned";
   if (transport_.authenticating() && transport_.unauthenticated() > 0)
-    return "; " + std::to_string(transport_.unauthenticated()) +
-           " message(s) heard here failed the signature check: the servers may use another "
-           "secret than this client's, or none (docs/security.md)";
-  return "";
+    hint += "; " + std::to_string(transport_.unauthenticated()) +
+            " message(s) heard here failed the signature check: the servers may use another "
+            "secret than this client's, or none";
+  if (!transport_.authenticating() && signed_but_unchecked_ > 0)
+    hint += "; " + std::to_string(signed_but_unchecked_) +
+            " signed announcement(s) heard: the servers use a secret and this client has none "
+            "(--secret FILE or $OLYMPICS_SECRET_FILE)";
+  if (transport_.authenticating() && transport_.stale() > 0)
+    hint += "; " + std::to_string(transport_.stale()) +
+            " message(s) were sent too long ago by their sender's clock: keep the hosts' clocks "
+            "in step (NTP)";
+  return hint.empty() ? hint : hint + " (docs/security.md)";
 }
 
 std::vector<olympics::error_t> Connection::take_errors() {

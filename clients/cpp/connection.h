@@ -105,7 +105,8 @@ class Connection {
   void send_join(const std::string& match_id, const std::vector<int>& slots);
   std::optional<JoinReply> take_join_reply(const std::string& match_id);
   // An error that ends any hope for this match: UNKNOWN_MATCH, STORE_FAILED (and, before the
-  // join is accepted, UNAUTHENTICATED or UPGRADE).
+  // join is accepted, UPGRADE). Never UNAUTHENTICATED: that hint names nobody and anyone can
+  // send it, so it is only reported (silence_hint()).
   std::optional<olympics::error_t> fatal_error(const std::string& match_id,
                                                bool joining = false) const;
 
@@ -114,7 +115,8 @@ class Connection {
   const olympics::match_result_t* result(const std::string& match_id) const;
   void forget(const std::string& match_id);
 
-  // The boot of a server as last announced, and how long ago; nullopt if never heard.
+  // The newest boot a server announced, and when it last announced it; nullopt if never heard.
+  // An announcement of an earlier boot (a replay of a stopped process's) changes nothing.
   struct ServerSeen {
     Clock::time_point when;
     std::int64_t boot_us = 0;
@@ -143,9 +145,11 @@ class Connection {
   // Errors the server addressed to this client (or to its requests) since the last call.
   std::vector<olympics::error_t> take_errors();
   // Why nothing may be answering, for a TIMEOUT's message ("" when nothing suggests it): with a
-  // secret, messages that failed the signature check (servers with another secret, or none).
-  // Only words: an outsider can send unsigned messages too, so nothing is decided on them.
-  // (Without a secret, a signed server answers with UNAUTHENTICATED itself.)
+  // secret, messages that failed the signature check (servers with another secret, or none);
+  // without one, signed messages heard (servers with a secret); either way, a server's
+  // UNAUTHENTICATED hint (our joins or requests failed its check). Only words: an outsider can
+  // send all of these too, so nothing is decided on them. The same is printed on stderr once,
+  // within seconds, while the first request or join of this client goes unanswered.
   std::string silence_hint() const;
   // Errors that named this client with a match it neither joined nor plays: ignored.
   long ignored_errors() const { return ignored_errors_; }
@@ -161,6 +165,13 @@ class Connection {
   std::deque<olympics::error_t> errors_;
   long ignored_errors_ = 0;
   void on_error(const olympics::error_t& e);
+  // Signs of a secret mismatch (silence_hint()), and whether they were reported on stderr.
+  long authentication_hints_ = 0;  // UNAUTHENTICATED hints heard
+  long signed_but_unchecked_ = 0;  // signed messages heard without a secret
+  bool answered_ = false;          // a request or join of ours was answered
+  std::optional<Clock::time_point> first_sent_;
+  bool mismatch_reported_ = false;
+  void report_mismatch_if_stuck();
   std::deque<Assignment> assignments_;  // heard, not yet handed out
   std::set<std::string> assigned_matches_;
   std::map<std::string, ServerSeen> servers_;  // by id, from their announcements

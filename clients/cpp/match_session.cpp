@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "channels.h"
+#include "match_id.h"
 #include "olympics/action_batch_t.hpp"
 #include "olympics/heartbeat_t.hpp"
 #include "olympics/observation_batch_t.hpp"
@@ -145,8 +146,11 @@ void MatchSession::fail_if_lost() {
                                           "the join: it is gone, or on another network");
     return;
   }
-  if (server_boot_ == 0) server_boot_ = seen->boot_us;
-  if (seen->boot_us != server_boot_)
+  // The boot that hosts the match is in its id; an announcement of a later boot is a restart,
+  // of an earlier one a replay of a stopped process's (ignored).
+  if (server_boot_ == 0) server_boot_ = protocol::match_boot_ms(match_.match_id).value_or(-1);
+  if (server_boot_ < 0) server_boot_ = seen->boot_us / 1000;  // an id of another form
+  if (seen->boot_us / 1000 > server_boot_)
     throw MatchError("SERVER_RESTARTED", "server " + match_.server_id + " restarted: match " +
                                              match_.match_id + " is lost");
   if (Clock::now() - seen->when > silence)

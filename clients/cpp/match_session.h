@@ -72,7 +72,7 @@ class MatchSession {
   Clock::time_point joined_at_, last_heartbeat_, last_send_, acted_at_;
   double resend_gap_s_ = 0;  // doubles with every resend of the same action
   bool resent_ = false;      // the last action went more than once: its round trip means nothing
-  std::int64_t server_boot_ = 0;  // the server's boot when first heard after the join
+  std::int64_t server_boot_ = 0;  // the boot (Unix ms) of the server hosting the match
 };
 
 }  // namespace olympics::client

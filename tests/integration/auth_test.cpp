@@ -11,6 +11,7 @@
 #include "channels.h"
 #include "league_store.h"
 #include "olympics/action_batch_t.hpp"
+#include "olympics/error_t.hpp"
 #include "olympics/match_created_t.hpp"
 #include "olympics/match_result_t.hpp"
 #include "olympics/observation_batch_t.hpp"
@@ -96,6 +97,17 @@ class Attacker {
       });
     start();
   }
+  // Sends the server's UNAUTHENTICATED hint, unsigned, 100 times a second.
+  void forge_hints() {
+    start([this] {
+      olympics::error_t e;
+      e.protocol_version = protocol::kProtocolVersion;
+      e.code = "UNAUTHENTICATED", e.message = "signature check failed";
+      transport_.publish(protocol::kError, e);
+      ++sent_;
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    });
+  }
   long sent() const { return sent_; }
   void stop() {
     running_ = false;
@@ -148,10 +160,57 @@ TEST(Auth, ASecuredMatchPlaysAndAClientWithoutTheSecretIsToldWhy) {
   const auto r = play(server, "secured", {"--secret", secret});
   ASSERT_TRUE(r.contains("match_id")) << r.dump();
   EXPECT_TRUE(server.store()->find(r.at("match_id")).has_value());
+  // It is told within seconds, and gives up at its timeout (the server's hint names nobody, so
+  // anyone could send one: it is reported, never obeyed).
   auto stranger = server.agent("stranger", {"--request-id", "nope", "--slots", "0"});
-  EXPECT_EQ(stranger->wait(30), 2);
-  EXPECT_NE(stranger->output().find("UNAUTHENTICATED"), std::string::npos) << stranger->output();
+  EXPECT_TRUE(stranger->wait_for_output("UNAUTHENTICATED", 5)) << stranger->output();
   EXPECT_NE(stranger->output().find("--secret"), std::string::npos) << stranger->output();
+  EXPECT_NE(stranger->output().find("this client has none"), std::string::npos)
+      << stranger->output();
+  stranger->signal(SIGTERM);
+  stranger->wait(10);
+}
+
+// A misconfigured client says what is wrong within seconds, not at its timeout; and the hint
+// it learns it from cannot make a correctly configured client give up: anyone can send one.
+TEST(Auth, AMisconfiguredClientSaysSoWithinSecondsAndAForgedHintEndsNoMatch) {
+  const std::string dir = temp_dir(), secret = new_secret(dir), other = dir + "/other";
+  protocol::write_new_secret(other);
+  auto waiting = [&](const ServerFixture& to, const std::string& name,
+                     std::vector<std::string> key) {
+    std::vector<std::string> argv = {program("olympics-agent"),
+                                     "--lcm-url",
+                                     to.url(),
+                                     "--name",
+                                     name,
+                                     "--request-id",
+                                     name,
+                                     "--slots",
+                                     "0",
+                                     "--timeout",
+                                     "60"};
+    argv.insert(argv.end(), key.begin(), key.end());
+    return std::make_unique<Process>(argv, to.dir() + "/agent-" + name + ".log");
+  };
+  ServerFixture server({"--secret", secret}), open_server;
+  for (auto& [to, name, key, says] :
+       std::vector<std::tuple<ServerFixture*, std::string, std::vector<std::string>, std::string>>{
+           {&server, "wrong", {"--secret", other}, "is not the server's"},
+           {&server, "none", {}, "this client has none"},
+           {&open_server, "signed", {"--secret", secret}, "or none"}}) {
+    auto p = waiting(*to, name, key);
+    EXPECT_TRUE(p->wait_for_output(says, 5)) << name << ":\n" << p->output();
+    p->signal(SIGTERM);
+    p->wait(10);
+  }
+  // Forged hints on an unsigned network (where a client reads them): the match plays on.
+  Attacker forger(open_server.url());
+  forger.forge_hints();
+  while (forger.sent() < 20) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  const auto r = play(open_server, "hinted", {});
+  forger.stop();
+  EXPECT_TRUE(r.contains("match_id")) << r.dump();
+  EXPECT_GT(forger.sent(), 10);
 }
 
 TEST(Auth, SpoofedActionsWithACopiedClientIdChangeNothing) {

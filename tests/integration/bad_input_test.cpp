@@ -26,8 +26,10 @@ class Prankster {
                          });
   }
   // Waits for an error with this code (up to 30 s); returns its message ("" if none came).
-  std::string expect_error(const std::string& code) {
-    auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  std::string expect_error(const std::string& code, double wait_s = 30) {
+    auto deadline = std::chrono::steady_clock::now() +
+                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                        std::chrono::duration<double>(wait_s));
     while (std::chrono::steady_clock::now() < deadline) {
       for (auto it = errors_.begin(); it != errors_.end(); ++it)
         if (it->code == code) {
@@ -136,11 +138,15 @@ TEST(BadInput, EveryBadMessageGetsAClearErrorAndTheMatchPlaysOn) {
   prank.transport().publish_raw(act, bytes.data(), static_cast<int>(bytes.size()) / 2);
   EXPECT_NE(prank.expect_error("MALFORMED").find("could not decode a action_batch_t"),
             std::string::npos);
-  const std::uint8_t garbage[] = {1, 2, 3, 4, 5, 6, 7, 8, 9};
-  prank.transport().publish_raw(protocol::kJoin, garbage, sizeof garbage);
+  // Garbage: answered with MALFORMED when the answer is no bigger than the garbage (issue 36:
+  // nothing answers bad input with more bytes than it got), with nothing when it would be.
+  const std::vector<std::uint8_t> garbage(400, 0x5a), tiny = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+  prank.transport().publish_raw(protocol::kJoin, garbage.data(), 400);
   EXPECT_NE(prank.expect_error("MALFORMED").find("join_t"), std::string::npos);
-  prank.transport().publish_raw(protocol::kRequest, garbage, sizeof garbage);
+  prank.transport().publish_raw(protocol::kRequest, garbage.data(), 400);
   EXPECT_NE(prank.expect_error("MALFORMED").find("match_request_t"), std::string::npos);
+  prank.transport().publish_raw(protocol::kRequest, tiny.data(), 9);
+  EXPECT_EQ(prank.expect_error("MALFORMED", 1.0), "") << "an answer bigger than the question";
 
   // None of it moved the match: still tick 0, and it plays on to a stored end.
   std::vector<std::vector<float>> zero(1, std::vector<float>(size, 0.0f));

@@ -13,6 +13,7 @@
 #include "auth.h"
 #include "bundle.h"
 #include "channels.h"
+#include "freshness.h"
 #include "league_store.h"
 #include "mutator.h"
 #include "olympics/error_t.hpp"
@@ -132,8 +133,16 @@ TEST(Fuzz, ThousandsOfMutatedMessagesOnEveryChannelCrashNothing) {
     const std::string& ch = channels[mutate.pick(static_cast<int>(channels.size()))];
     const auto& pool = seen[ch];
     auto bytes = mutate.mutate(type_of(ch), pool[mutate.pick(static_cast<int>(pool.size()))]);
-    if (mutate.pick(2) && bytes.size() >= 40)
+    if (mutate.pick(2) && bytes.size() >= protocol::kSignatureBytes + 8) {
+      // Signed mutants reach the decoders only when fresh (protocol/freshness.h): most get a
+      // freshness of their own, the rest keep what the mutation made of the recorded one
+      // (replays, garbage times: the windows' checks are fuzzed too).
+      if (mutate.pick(4))
+        protocol::write_freshness(
+            bytes.data() + bytes.size() - protocol::kSignatureBytes,
+            {0xf022, static_cast<std::uint64_t>(sent + 1), protocol::wall_clock_ms()});
       auth.sign(ch, bytes.data(), static_cast<int>(bytes.size()));
+    }
     listener.publish_raw(ch, bytes.data(), static_cast<int>(bytes.size()));
     if (++sent % 50 == 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }

@@ -11,9 +11,13 @@
 #include <thread>
 
 #include "auth.h"
+#include "channels.h"
 #include "leaderboard.h"
 #include "league_store.h"
+#include "olympics/server_announce_t.hpp"
 #include "server_fixture.h"
+#include "transport.h"
+#include "version.h"
 
 namespace olympics::testing {
 namespace {
@@ -244,7 +248,13 @@ TEST(League, AGameWhoseServerRestartedMidMatchIsPlayedAgain) {
   server->wait(10);
   auto back = serve("back.log");
   ASSERT_EQ(run.wait(120), 0) << run.output();
-  EXPECT_NE(run.output().find("no longer knows match phoenix-"), std::string::npos) << run.output();
+  // Told by the new boot's announcement (the match names the earlier boot), or by its answer to
+  // the league's probe, whichever comes first.
+  const std::string out = run.output();
+  EXPECT_TRUE(out.find("no longer knows match phoenix-") != std::string::npos ||
+              (out.find("match phoenix-") != std::string::npos &&
+               out.find("of its earlier run was aborted") != std::string::npos))
+      << out;
   const auto games = selfplay::LeagueStore(db).games("phoenix_cup");
   ASSERT_EQ(games.size(), 1u);
   EXPECT_EQ(games[0].status, GameStatus::Done);
@@ -331,6 +341,70 @@ TEST(League, NoUsableServerStopsTheRunWithAReason) {
       << nosuch;
   const std::string wrong = run("wrong", {"--secret", other});
   EXPECT_NE(wrong.find("failed the signature check"), std::string::npos) << wrong;
+}
+
+// A server that announces itself and never answers a request (it hears only some messages, or
+// is stuck): the league gives the game to another server after --server-wait-s, saying why, and
+// with no other server it stops, naming it. (It waited for ever.)
+TEST(League, ALiveServerThatNeverAnswersIsLeftWithAMessage) {
+  const std::string url = unique_lcm_url(), dir = temp_dir(), secret = dir + "/secret";
+  protocol::write_new_secret(secret);
+  std::atomic<bool> done{false};
+  std::thread mute([&] {
+    protocol::Transport t(protocol::TransportOptions(url, 0, 1, protocol::load_secret(secret)));
+    const auto boot = std::chrono::duration_cast<std::chrono::microseconds>(
+                          std::chrono::system_clock::now().time_since_epoch())
+                          .count();
+    while (!done) {
+      olympics::server_announce_t a;
+      a.protocol_version = protocol::kProtocolVersion;
+      a.server_id = "mute", a.capacity = 10000, a.boot_us = boot;
+      a.sports = {"sandbox"}, a.num_sports = 1;
+      t.publish(protocol::kAnnounce, a);
+      std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    }
+  });
+  auto league = [&](const std::string& name, std::vector<std::string> extra) {
+    std::vector<std::string> argv = {program("olympics-league"),
+                                     "run",
+                                     "--db",
+                                     dir + "/" + name + ".db",
+                                     "--name",
+                                     name,
+                                     "--entrants",
+                                     "zero,zero",
+                                     "--time-limit",
+                                     "2",
+                                     "--lcm-url",
+                                     url,
+                                     "--secret",
+                                     secret,
+                                     "--server-wait-s",
+                                     "3",
+                                     "--log-dir",
+                                     dir,
+                                     "--quiet"};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    return std::make_unique<Process>(argv, dir + "/" + name + ".log");
+  };
+  auto alone = league("alone", {"--servers", "mute"});
+  EXPECT_EQ(alone->wait(60), 2) << alone->output();
+  EXPECT_NE(alone->output().find("mute announce(s) themselves but left requests unanswered"),
+            std::string::npos)
+      << alone->output();
+  {
+    ServerFixture alpha({"--secret", secret}, url, "", "alpha");
+    auto moved = league("moved", {});
+    EXPECT_EQ(moved->wait(60), 0) << moved->output();
+    EXPECT_NE(moved->output().find("server mute announces itself but did not answer"),
+              std::string::npos)
+        << moved->output();
+    const auto games = selfplay::LeagueStore(dir + "/moved.db").games("moved");
+    ASSERT_EQ(games.size(), 1u);
+    EXPECT_EQ(games[0].server_id, "alpha");
+  }
+  done = true;
+  mute.join();
 }
 
 TEST(League, ARefusedSpecStopsWithTheServersReason) {
