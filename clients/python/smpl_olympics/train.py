@@ -166,6 +166,7 @@ def spawn_server(run_dir):
 
 class Trainer:
     """`spec`: the mode's catalog entry (default: from the catalog; tests pass their own)."""
+    RESULT_WAIT_S = 30.0  # --win-reward: how long a match's result may take to come
 
     def __init__(self, args, spec=None):
         self.args = args
@@ -439,9 +440,11 @@ class Trainer:
 
     def credit_outcomes(self, env, ended, rewards):
         """--win-reward: +W (won) or -W (lost) on the last tick of each learning slot whose match
-        ended in this iteration. A result comes a round trip after the match's last tick; one
-        that has not come within 0.5 s gets nothing (counted in `outcomes_missed`)."""
-        give_up = time.monotonic() + 0.5
+        ended in this iteration. A result comes a round trip after the match's last tick: the
+        trainer waits for it (so that what a run learns does not depend on how loaded the
+        machine is: reruns are identical); one that has not come within RESULT_WAIT_S is lost
+        and gets nothing (counted in `outcomes_missed`)."""
+        give_up = time.monotonic() + self.RESULT_WAIT_S
         heard = self.results
         while True:
             for r in heard:
