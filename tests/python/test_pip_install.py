@@ -60,11 +60,15 @@ class PipInstall(unittest.TestCase):
              os.path.join(REPO, "clients", "python")],
             env=env, capture_output=True, text=True, cwd=folder)
         self.assertEqual(build.returncode, 0, build.stdout[-4000:] + build.stderr[-3000:])
-        self.assertIn("scikit-build-core", build.stdout)  # the project's CMake built it
         (wheel,) = glob.glob(os.path.join(wheels, "smpl_olympics-*.whl"))
 
-        # Ninja tracks headers: a header change recompiles what includes it.
+        # The project's own CMake built it, in the kept folder, with the package-only option.
         build_dir = BUILD_DIR.format(wheel_tag=os.path.basename(wheel).split("-", 2)[2][:-4])
+        with open(os.path.join(build_dir, "CMakeCache.txt")) as f:
+            cache = f.read()
+        self.assertIn(f"CMAKE_HOME_DIRECTORY:INTERNAL={REPO}\n", cache)
+        self.assertIn("OLYMPICS_PYTHON_PACKAGE_ONLY:BOOL=ON", cache)
+        # Ninja tracks headers: a header change recompiles what includes it.
         deps = subprocess.run(["ninja", "-C", build_dir, "-t", "deps",
                                "clients/CMakeFiles/smpl_olympics_client.dir/python/bindings.cpp.o"],
                               capture_output=True, text=True)
