@@ -284,12 +284,12 @@ class TrainTest(unittest.TestCase):
         env = dict(os.environ, OLYMPICS_BIN_DIR=BIN)
         out = subprocess.run(
             ["/usr/bin/python3", "-m", "smpl_olympics.train", "--run", run, "--sport",
-             "table_tennis", "--mode", "ball_return", "--spawn-server", "--samples", "1024",
+             "table_tennis", "--mode", "ball_return", "--samples", "1024",  # a private server
              "--num-envs", "4", "--horizon", "64", "--hidden", "32", "--residual", "scripted",
              "--snapshot-every", "1", "--quiet"],
             env=env, capture_output=True, text=True, timeout=600)
         self.assertEqual(out.returncode, 0, out.stdout + out.stderr)
-        for f in ("checkpoint.pt", "metrics.csv", "curves.png", "args.json",
+        for f in ("checkpoint.pt", "metrics.csv", "curves.png", "args.json", "server.log",
                   "snapshots/policy-latest.safetensors", "snapshots/policy-v00004.safetensors"):
             self.assertTrue(os.path.exists(os.path.join(run, f)), f)
         rows = read_metrics(run)
