@@ -17,7 +17,7 @@ from server_process import BIN
 from smpl_olympics import train
 from smpl_olympics._client import NativePolicy
 from smpl_olympics.ppo import ActorCritic, RunningNorm
-from smpl_olympics.training_log import read_metrics
+from smpl_olympics.training_log import TrainingLog, read_metrics
 
 
 class ToyVectorEnv:
@@ -158,6 +158,7 @@ class TrainTest(unittest.TestCase):
         self.assertEqual(float(np.abs(rewards).sum()), 10.0)  # the draw earned nothing
         self.assertEqual(trainer.outcomes_missed, 0)
         self.assertEqual(len(trainer.results), 3)  # kept for the metrics row's win rate
+        trainer.RESULT_WAIT_S = 0.2
         trainer.credit_outcomes(Results(), {"never": (0, 0)}, rewards)  # its result is lost
         self.assertEqual(trainer.outcomes_missed, 1)
         self.assertEqual(float(np.abs(rewards).sum()), 10.0)
@@ -283,12 +284,12 @@ class TrainTest(unittest.TestCase):
         env = dict(os.environ, OLYMPICS_BIN_DIR=BIN)
         out = subprocess.run(
             ["/usr/bin/python3", "-m", "smpl_olympics.train", "--run", run, "--sport",
-             "table_tennis", "--mode", "ball_return", "--spawn-server", "--samples", "1024",
+             "table_tennis", "--mode", "ball_return", "--samples", "1024",  # a private server
              "--num-envs", "4", "--horizon", "64", "--hidden", "32", "--residual", "scripted",
              "--snapshot-every", "1", "--quiet"],
             env=env, capture_output=True, text=True, timeout=600)
         self.assertEqual(out.returncode, 0, out.stdout + out.stderr)
-        for f in ("checkpoint.pt", "metrics.csv", "curves.png", "args.json",
+        for f in ("checkpoint.pt", "metrics.csv", "curves.png", "args.json", "server.log",
                   "snapshots/policy-latest.safetensors", "snapshots/policy-v00004.safetensors"):
             self.assertTrue(os.path.exists(os.path.join(run, f)), f)
         rows = read_metrics(run)
@@ -407,6 +408,20 @@ def _cmdline(pid):
             return f.read().decode(errors="replace")
     except OSError:  # it ended meanwhile
         return ""
+
+
+class Curves(unittest.TestCase):
+    def test_a_ball_return_curve_has_no_empty_win_rate_panel(self):
+        run = tempfile.mkdtemp(prefix="olympics-curves-")
+        log = TrainingLog(run, ["contact", "hits"])
+        for i in range(1, 4):  # a ball return: scores and touches, never a winner
+            log.write({"iteration": i, "samples": 100 * i, "episode_return": 1.0 * i,
+                       "episode_length": 40, "score": 0.1 * i, "touch_rate": 0.2,
+                       "term_contact": 0.5, "term_hits": 0.1})
+        panels = log.plot(os.path.join(run, "curves.png"), "ball return")
+        self.assertEqual(panels, ["episode_return", "episode_length", "score", "touch_rate",
+                                  "term_contact", "term_hits"])
+        self.assertTrue(os.path.getsize(os.path.join(run, "curves.png")) > 0)
 
 
 class TrainerSaysWhichPython(unittest.TestCase):

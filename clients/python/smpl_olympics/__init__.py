@@ -8,6 +8,14 @@
         observations, rewards, terminations, truncations, infos = env.step(actions)
     print(env.result)
 """
+import os as _os
+
+# A wheel (pip install ./clients/python) carries the humanoid assets that the scripted players'
+# body model and the olympics-server it starts load: point them there, not at a checkout.
+_ASSETS = _os.path.join(_os.path.dirname(__file__), "assets")
+if _os.path.isdir(_ASSETS):
+    _os.environ.setdefault("OLYMPICS_ASSET_DIR", _ASSETS)
+
 from ._client import MatchClient, MatchError
 from .env import OlympicsParallelEnv
 from .servers import CapacityError, NoServerError

@@ -16,6 +16,7 @@ import numpy as np
 from . import catalog
 from ._client import MatchClient
 from .layout import ObservationLayout
+from .private_server import PrivateServer
 from .servers import CONNECT_TIMEOUT_S, find_servers
 from .spaces import box
 
@@ -25,7 +26,15 @@ except ImportError:  # nothing beyond numpy is required: the same surface withou
     _ParallelEnvBase = object
 
 
+# Matches a parallel env's private server hosts at once: one, and room for a match still ending
+# while the next one starts.
+PRIVATE_SERVER_CAPACITY = 4
+
+
 class OlympicsParallelEnv(_ParallelEnvBase):
+    """lcm_url: the server's (a deployment's) LCM URL; none: the env starts a private
+    olympics-server for itself at its first reset (env.lcm_url then names it, for opponents to
+    join) and stops it on close() or when the process ends."""
     metadata = {"name": "smpl_olympics", "render_modes": [], "is_parallelizable": True}
     render_mode = None
 
@@ -43,7 +52,14 @@ class OlympicsParallelEnv(_ParallelEnvBase):
         self.learner = learner  # a league entrant live:<learner>: reset() plays what the league assigns
         self.assignment = None
         # The deployment's secret file ("" = $OLYMPICS_SECRET_FILE, or none): docs/security.md.
-        self._client = MatchClient(lcm_url, agent_name, policy_id, policy_version, secret_file)
+        self._client_settings = (agent_name, policy_id, policy_version, secret_file)
+        self.lcm_url = lcm_url or ""
+        if not self.lcm_url and (learner is not None or match_id is not None):
+            raise ValueError("joining a league's or another client's match needs the lcm_url of "
+                             "the server hosting it (without one, the env starts a private "
+                             "server where nobody else plays)")
+        self._client = None  # connected at the first reset (after a private server starts)
+        self._server = None
         # The first reset first listens this long for the server's announcement, and raises
         # NoServerError (naming the URL and how to start one) rather than wait timeout_s.
         self._connect = dict(lcm_url=lcm_url, secret_file=secret_file, server_id=server_id,
@@ -123,6 +139,7 @@ class OlympicsParallelEnv(_ParallelEnvBase):
         """
         if seed is None:
             seed = int(np.random.SeedSequence().entropy % (1 << 62))
+        self._connect_client()
         if not self._server_seen:
             find_servers(**self._connect)
             self._server_seen = True
@@ -185,7 +202,21 @@ class OlympicsParallelEnv(_ParallelEnvBase):
         return observations, rewards, terminations, truncations, infos
 
     def close(self):
+        """Ends this env's use of the server; a private server stops (its matches end)."""
         self.agents = []
+        if self._server is not None:  # a later reset starts a new one
+            self._server.close()
+            self._server = self._client = None
+            self.lcm_url, self._server_seen = "", False
+
+    def _connect_client(self):
+        if self._client is not None:
+            return
+        if not self.lcm_url:
+            self._server = PrivateServer(capacity=PRIVATE_SERVER_CAPACITY)
+            self.lcm_url, self.server_id = self._server.url, self._server.server_id
+            self._connect.update(lcm_url=self.lcm_url, server_id=self.server_id)
+        self._client = MatchClient(self.lcm_url, *self._client_settings)
 
     def block(self, observation, name):
         """The named block of an observation ("self", "ball_position", ...): describe lists them."""

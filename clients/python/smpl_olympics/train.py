@@ -15,12 +15,9 @@ mlp:FILE and the league play them), metrics.csv and curves.png. docs/training.md
 """
 import argparse
 import copy
-import ctypes
 import json
 import os
 import shutil
-import signal
-import subprocess
 import sys
 import time
 
@@ -38,8 +35,9 @@ except ImportError as missing:  # another Python than the one with PyTorch: say 
     raise ImportError(_why) from missing
 
 from . import catalog
-from ._client import NativePolicy
+from ._client import DEFAULT_LCM_URL, NativePolicy
 from .ppo import ActorCritic, PpoSettings, RunningNorm, gae, ppo_update
+from .private_server import TRAINING_SERVER_FLAGS, PrivateServer  # noqa: F401 (tests)
 from .snapshot import export_mlp
 from .training_log import TrainingLog
 from .vector_env import OlympicsVectorEnv
@@ -102,10 +100,12 @@ def parse_args(argv=None):
                         "publishes and its bots; one team's slots learn")
     p.add_argument("--init", help="warm start from a run folder (blocks matched by name)")
     p.add_argument("--seed", type=int, default=0)
-    p.add_argument("--lcm-url", default="", help="the server's LCM URL (default LCM's)")
+    p.add_argument("--lcm-url", default="",
+                   help="the server's LCM URL (default: a private server, as --spawn-server)")
     p.add_argument("--secret", default="", help="the deployment's secret file")
     p.add_argument("--spawn-server", action="store_true",
-                   help="start a private olympics-server for this run (results in the run folder)")
+                   help="start a private olympics-server for this run (results in the run folder);"
+                        " the default without --lcm-url")
     p.add_argument("--snapshot-every", type=int, default=20, help="iterations between snapshots")
     p.add_argument("--quiet", action="store_true", help="no progress line")
     p.add_argument("--torch-threads", type=int, default=1,
@@ -151,52 +151,22 @@ def term_weights(rewards, spec):
     return np.array([weights[t["name"]] for t in rewards], np.float32)
 
 
-def find_program(name):
-    for candidate in (os.environ.get("OLYMPICS_" + name.split("-")[1].upper()),
-                      os.path.join(os.environ.get("OLYMPICS_BIN_DIR", ""), name),
-                      shutil.which(name), os.path.join("build", "bin", name)):
-        if candidate and os.access(candidate, os.X_OK):
-            return candidate
-    sys.exit(f"{name} not found: build the project (bash deploy/build.sh), put it on PATH or "
-             f"set OLYMPICS_BIN_DIR")
-
-
-# A trainer's matches stand still while it updates the policy: the server it plays on waits for
-# its actions (10 min) instead of forfeiting it after a few missed ticks. --spawn-server starts
-# one so; a league run's server needs them too (docs/training.md).
-TRAINING_SERVER_FLAGS = ["--silent-timeout-s", "600", "--action-deadline-ms", "600000",
-                         "--max-missed-ticks", "100000"]
-
-
-def _die_with_the_trainer():
-    """Runs in the spawned server before exec: Linux sends it SIGTERM when the trainer dies,
-    however it dies (a killed run left its server running before), and the server stores what
-    it has and stops."""
-    PR_SET_PDEATHSIG = 1
-    ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGTERM)
+# A run's private server (the default without --lcm-url): results and log in the run folder.
+# Matches hosted at once: the run's num_envs, and room for more (opponents' and helpers').
+SPAWNED_SERVER_CAPACITY = 1024
 
 
 def spawn_server(run_dir):
-    url = f"udpm://239.255.76.67:{20000 + os.getpid() % 20000}?ttl=0&recv_buf_size=4194304"
-    log = open(os.path.join(run_dir, "server.log"), "a")
-    server = subprocess.Popen(
-        [find_program("olympics-server"), "serve", "--lcm-url", url, "--id", f"train{os.getpid()}",
-         "--results", os.path.join(run_dir, "results.db"), "--capacity", "1024",
-         *TRAINING_SERVER_FLAGS], stdout=log, stderr=subprocess.STDOUT,
-        preexec_fn=_die_with_the_trainer)
-    give_up = time.monotonic() + 60
-    while time.monotonic() < give_up:
-        with open(log.name) as f:
-            if "olympics-server" in f.read():
-                return server, url
-        if server.poll() is not None:
-            break
-        time.sleep(0.05)
-    sys.exit(f"the olympics-server for this run did not start; see {log.name}")
+    try:
+        server = PrivateServer(capacity=SPAWNED_SERVER_CAPACITY, folder=run_dir)
+    except (FileNotFoundError, RuntimeError) as error:
+        sys.exit(f"the olympics-server for this run: {error}")
+    return server, server.url
 
 
 class Trainer:
     """`spec`: the mode's catalog entry (default: from the catalog; tests pass their own)."""
+    RESULT_WAIT_S = 30.0  # --win-reward: how long a match's result may take to come
 
     def __init__(self, args, spec=None):
         self.args = args
@@ -329,7 +299,9 @@ class Trainer:
         """Trains until args.samples; `make_env` (tests) replaces the server's vector env."""
         a = self.args
         server = None
-        if a.spawn_server:
+        if a.league and not a.lcm_url:  # the league's server: on LCM's default URL
+            a.lcm_url = DEFAULT_LCM_URL
+        if a.spawn_server or not a.lcm_url:
             server, a.lcm_url = spawn_server(self.run_dir)
         log = TrainingLog(self.run_dir, self.term_names, resume=self.iteration > 0,
                           until_iteration=self.iteration)
@@ -375,8 +347,7 @@ class Trainer:
         finally:
             env.close()
             if server is not None:
-                server.terminate()
-                server.wait(timeout=30)
+                server.close()
 
     def plot(self, log):
         a = self.args
@@ -467,9 +438,11 @@ class Trainer:
 
     def credit_outcomes(self, env, ended, rewards):
         """--win-reward: +W (won) or -W (lost) on the last tick of each learning slot whose match
-        ended in this iteration. A result comes a round trip after the match's last tick; one
-        that has not come within 0.5 s gets nothing (counted in `outcomes_missed`)."""
-        give_up = time.monotonic() + 0.5
+        ended in this iteration. A result comes a round trip after the match's last tick: the
+        trainer waits for it (so that what a run learns does not depend on how loaded the
+        machine is: reruns are identical); one that has not come within RESULT_WAIT_S is lost
+        and gets nothing (counted in `outcomes_missed`)."""
+        give_up = time.monotonic() + self.RESULT_WAIT_S
         heard = self.results
         while True:
             for r in heard:

@@ -53,31 +53,37 @@ class TrainingLog:
         sys.stdout.flush()
 
     def plot(self, out_png, title):
-        """Return, episode length, the sport's score and each reward term over samples."""
+        """Return, episode length, the sport's score and each reward term over samples: the
+        panels that have data (returned, by name)."""
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
 
         rows = self.rows()
         if not rows:
-            return None
+            return []
         x = [float(r["samples"]) for r in rows]
-        series = ["episode_return", "episode_length", "score", "win_rate", "touch_rate"] + [
+        names = ["episode_return", "episode_length", "score", "win_rate", "touch_rate"] + [
             f for f in self.fields if f.startswith("term_")]
-        cols = 3
-        nrows = (len(series) + cols - 1) // cols
-        fig, axes = plt.subplots(nrows, cols, figsize=(4.2 * cols, 2.8 * nrows), squeeze=False)
-        for ax, name in zip(axes.flat, series):
-            pts = [(xi, float(r[name])) for xi, r in zip(x, rows) if r[name] not in ("", None)]
+        # Only the figures this run has: a ball return has no win rate, a match no touch rate.
+        series = {}
+        for name in names:
+            pts = [(xi, float(r[name])) for xi, r in zip(x, rows)
+                   if r.get(name) not in ("", None)]
             if pts:
-                xs, ys = zip(*pts)
-                ax.plot(xs, ys, lw=0.6, alpha=0.35)
-                # Each iteration ends few episodes: a moving mean over ~1/40 of the run shows
-                # the trend.
-                w = max(1, len(ys) // 40)
-                smooth = [sum(ys[max(0, i - w + 1):i + 1]) / len(ys[max(0, i - w + 1):i + 1])
-                          for i in range(len(ys))]
-                ax.plot(xs, smooth, lw=1.6, color="C1")
+                series[name] = pts
+        cols = 3
+        nrows = max(1, (len(series) + cols - 1) // cols)
+        fig, axes = plt.subplots(nrows, cols, figsize=(4.2 * cols, 2.8 * nrows), squeeze=False)
+        for ax, (name, pts) in zip(axes.flat, series.items()):
+            xs, ys = zip(*pts)
+            ax.plot(xs, ys, lw=0.6, alpha=0.35)
+            # Each iteration ends few episodes: a moving mean over ~1/40 of the run shows the
+            # trend.
+            w = max(1, len(ys) // 40)
+            smooth = [sum(ys[max(0, i - w + 1):i + 1]) / len(ys[max(0, i - w + 1):i + 1])
+                      for i in range(len(ys))]
+            ax.plot(xs, smooth, lw=1.6, color="C1")
             ax.set_title(name.replace("term_", "reward term: "), fontsize=9)
             ax.set_xlabel("samples", fontsize=8)
             ax.tick_params(labelsize=7)
@@ -88,4 +94,4 @@ class TrainingLog:
         fig.tight_layout()
         fig.savefig(out_png, dpi=90)
         plt.close(fig)
-        return out_png
+        return list(series)

@@ -13,6 +13,10 @@ Seeds: environment e's k-th match has seed seed + k * num_envs + e. Request ids:
 requests the same id meets it (olympics-agent --request-id <prefix>-<e>-<k>). With learner=NAME
 the env is a league's live learner instead: each environment plays the next match the league
 assigns to its entrant live:NAME (agents are then "agent_<i>", one per slot of a team).
+
+Server: lcm_url names a deployment's; without one, the first reset (or start) starts a private
+olympics-server sized for num_envs (env.lcm_url then names it), stopped by close() or when the
+process ends.
 """
 import json
 
@@ -20,6 +24,7 @@ import numpy as np
 
 from . import catalog
 from ._client import MatchError, VectorClient
+from .private_server import PrivateServer
 from .servers import CONNECT_TIMEOUT_S, check_capacity, find_servers, with_server_hint
 from .spaces import box
 
@@ -58,15 +63,28 @@ class OlympicsVectorEnv:
             learner=learner)
         self.seed = _fresh_seed() if seed is None else int(seed)
         self._client = None
+        if not lcm_url and learner:
+            raise ValueError("learner=: pass the lcm_url of the server the league uses (without "
+                             "one, the env starts a private server the league does not know)")
+        self._server = None  # the private server, when no lcm_url was given
         # The first reset (or start) listens this long for the servers' announcements: none
         # raises NoServerError; fewer matches admitted than num_envs raises CapacityError.
         self._connect = dict(lcm_url=lcm_url, secret_file=secret_file, server_id=server_id,
                              timeout_s=connect_timeout_s)
         self._servers_checked = False
 
+    @property
+    def lcm_url(self):
+        """The server's URL: the one given, or the private server's once it runs ("" before)."""
+        return self._settings["lcm_url"]
+
     def _check_servers(self):
         if self._servers_checked:
             return
+        if not self._settings["lcm_url"]:
+            self._server = PrivateServer(capacity=self.num_envs)
+            for settings in (self._settings, self._connect):
+                settings.update(lcm_url=self._server.url, server_id=self._server.server_id)
         if self._settings["learner"]:  # the league requests the matches: only a server is needed
             find_servers(**self._connect)
         else:
@@ -121,7 +139,14 @@ class OlympicsVectorEnv:
         return self._client.take_results() if self._client is not None else []
 
     def close(self):
+        """Stops playing; a private server stops too (a later reset starts a new one)."""
         self._client = None
+        if self._server is not None:
+            self._server.close()
+            self._server = None
+            for settings in (self._settings, self._connect):
+                settings.update(lcm_url="", server_id="")
+            self._servers_checked = False
 
     def _waiting(self, call, *args):
         """call(*args), its TIMEOUT saying what to check: the server."""

@@ -1,0 +1,78 @@
+"""smpl_olympics.evaluate against real servers: it picks the snapshot that plays best on the
+validation seeds (not the latest, not the first), measures it on other held-out seeds beside
+the scripted player, and a rerun gives the very same tables."""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+from smpl_olympics import catalog
+from smpl_olympics.snapshot import export_mlp
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def zero_mlp(obs_size, action_size):
+    """A network whose action is exactly zero: on top of the scripted player (residual) it is
+    the scripted player; alone it stands still and returns no ball."""
+    return [(np.zeros((8, obs_size), np.float32), np.zeros(8, np.float32)),
+            (np.zeros((action_size, 8), np.float32), np.zeros(action_size, np.float32))]
+
+
+class Evaluate(unittest.TestCase):
+    def make_run(self):
+        run = tempfile.mkdtemp(prefix="olympics-eval-")
+        spec = catalog.mode("table_tennis", "ball_return")
+        os.makedirs(os.path.join(run, "snapshots"))
+        with open(os.path.join(run, "args.json"), "w") as f:
+            json.dump({"sport": "table_tennis", "mode": "ball_return", "opponent": "",
+                       "time_limit": 0.0, "options": ""}, f)
+        layers = zero_mlp(spec["obs_size"], spec["action_size"])
+        for version, residual in ((1, "none"), (2, "scripted"), (3, "none")):
+            export_mlp(layers, os.path.join(run, "snapshots", f"policy-v{version:05d}.safetensors"),
+                       activation="silu", sport="table_tennis", mode="ball_return",
+                       residual=residual)
+        return run
+
+    def evaluate(self, run):
+        done = subprocess.run([sys.executable, "-m", "smpl_olympics.evaluate", run,
+                               "--validation-seeds", "1-12", "--test-seeds", "101-112",
+                               "--num-envs", "6"], capture_output=True, text=True, cwd=HERE,
+                              timeout=600)
+        self.assertEqual(done.returncode, 0, done.stdout[-3000:] + done.stderr[-3000:])
+        with open(os.path.join(run, "evaluation.json")) as f:
+            return json.load(f)
+
+    def test_picks_the_best_snapshot_on_validation_seeds_and_reruns_identically(self):
+        run = self.make_run()
+        first = self.evaluate(run)
+        val = first["validation"]
+        self.assertGreater(val["v00002"]["score"], 0, "the scripted player returned no ball")
+        self.assertEqual(val["v00001"]["score"], 0)
+        self.assertEqual(first["best"], 2, "not the best on the validation seeds")
+        with open(os.path.join(run, "snapshots", "policy-best.safetensors"), "rb") as a, \
+                open(os.path.join(run, "snapshots", "policy-v00002.safetensors"), "rb") as b:
+            self.assertEqual(a.read(), b.read())
+        test = first["test"]
+        self.assertEqual(set(test), {"scripted", "best: v00002", "latest: v00003"})
+        # The chosen snapshot is the scripted player plus zero: the same matches, the same score.
+        self.assertEqual(test["best: v00002"], test["scripted"])
+        self.assertEqual(test["best: v00002"]["matches"], 12)
+        self.assertEqual(self.evaluate(run), first, "a rerun gave other tables")
+        with open(os.path.join(run, "evaluation.md")) as f:
+            self.assertIn("| best: v00002 | 12 |", f.read())
+
+    def test_overlapping_seeds_are_refused(self):
+        done = subprocess.run([sys.executable, "-m", "smpl_olympics.evaluate", self.make_run(),
+                               "--validation-seeds", "1-20", "--test-seeds", "10-30"],
+                              capture_output=True, text=True, cwd=HERE)
+        self.assertNotEqual(done.returncode, 0)
+        self.assertIn("overlap", done.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()
