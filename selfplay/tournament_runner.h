@@ -6,6 +6,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -32,6 +33,8 @@ struct RunnerSettings {
   double server_wait_s = 60;         // no usable server heard this long: stop, saying so
   bool progress = true;              // a progress bar on stderr
   std::string secret_file;           // "" = $OLYMPICS_SECRET_FILE, or none; its workers get it too
+  // Told each game's result once it is stored (a fleet's cell hands it on to the queue).
+  std::function<void(const Game&)> on_game_done;
 };
 
 // The slots of `team` from a match's slot-to-team mapping (match_created_t.slot_team), in slot
