@@ -23,6 +23,7 @@ namespace olympics::bench {
   X(combat)                    \
   X(soak)                      \
   X(vector)                    \
+  X(fleet)                     \
   /* the list's end */
 // clang-format on
 

@@ -123,27 +123,32 @@ s.sendto(b"control", ("239.255.76.67", 7667))'
 sleep 0.5
 [ "$(cat "$work/heard")" = 1 ] || fail "the listener did not hear the ttl=1 control datagram"
 
+# The deployment's secret, as every host of a real fleet has it.
+"$bin/olympics-server" secret "$work/secret" > /dev/null
 list=zero
 for i in $(seq 2 "$entrants"); do list+=",random:$i"; done
 games=$((entrants * (entrants - 1) / 2))
 name=fleet$$
 "$bin/olympics-league" run --fleet --db "$db" --name "$name" --entrants "$list" --seed 5 \
-  --time-limit "$time_limit" > "$work/queue.log" 2>&1 || fail "queueing: $(cat "$work/queue.log")"
+  --time-limit "$time_limit" --secret "$work/secret" > "$work/queue.log" 2>&1 || fail "queueing: $(cat "$work/queue.log")"
 
 start_cell() {
   local h=$1
   mkdir -p "$work/$h"
   in_ns "$h" "$bin/olympics-league" cell --db "$db" --name "$name" --cell "$h" --spawn-server \
-    --batch 2 --parallel 2 --lease-s "$lease_s" --log-dir "$work/$h" > "$work/$h.log" 2>&1 &
+    --batch 2 --parallel 2 --lease-s "$lease_s" --secret "$work/secret" --log-dir "$work/$h" \
+    > "$work/$h.log" 2>&1 &
   echo $! > "$work/$h.pid"
 }
 started=$(date +%s)
 for h in cell1 cell2 cell3; do start_cell "$h"; done
 # The same tournament on one host, from SQLite, at the same time.
 in_ns solo "$bin/olympics-server" serve --id solo --results "$work/solo-results.db" \
+  --secret "$work/secret" \
   > "$work/solo-server.log" 2>&1 &
 in_ns solo "$bin/olympics-league" run --db "$work/one.db" --name one --entrants "$list" --seed 5 \
-  --time-limit "$time_limit" --parallel 2 --log-dir "$work" --quiet > "$work/one.log" 2>&1 &
+  --time-limit "$time_limit" --parallel 2 --secret "$work/secret" --log-dir "$work" --quiet \
+  > "$work/one.log" 2>&1 &
 solo_league=$!
 
 wait_for() {  # wait_for WHAT SECONDS CONDITION...
@@ -156,10 +161,14 @@ holds_game() {  # the cell has stored a game and holds one now
     [ "$(sql "SELECT count(*) FROM fleet_queue WHERE tournament = '$name' AND cell = '$1' AND state = 'leased'")" -ge 1 ]
 }
 
-# Fault 1: cell2's host dies while it holds a game.
-wait_for "cell2 to hold a game" 120 holds_game cell2
-held=$(sql "SELECT string_agg(idx::text, ',') FROM fleet_queue WHERE tournament = '$name' AND cell = 'cell2' AND state = 'leased'")
+# Fault 1: cell2's host dies mid-match (its policy workers playing a game it holds).
+agents_in() { ip netns pids "$(ns "$1")" | xargs -r ps -o comm= -p | grep -c olympics-agent || true; }
+playing() { holds_game "$1" && [ "$(agents_in "$1")" -ge 1 ]; }
+wait_for "cell2 to be playing a game" 120 playing cell2
 for pid in $(ip netns pids "$(ns cell2)"); do kill -9 "$pid" 2>/dev/null || true; done
+# What it held when it died (a result it stored an instant before is not among them).
+held=$(sql "SELECT string_agg(idx::text, ',') FROM fleet_queue WHERE tournament = '$name' AND cell = 'cell2' AND state = 'leased'")
+[ -n "$held" ] || fail "cell2 held no game when it was killed"
 echo "killed cell2 holding games $held"
 
 # Fault 2: cell3's link goes down for cut_s seconds while it holds a game.
@@ -204,5 +213,6 @@ kill -TERM $listener
 sleep 0.3
 [ "$(cat "$work/heard")" = 1 ] || fail "$(($(cat "$work/heard") - 1)) LCM datagram(s) left a cell"
 
+twice=$(cat "$work"/cell*.log | grep -c "was stored already" || true)
 per_cell=$(sql "SELECT string_agg(cell || ' ' || n, ', ') FROM (SELECT cell, count(*) n FROM fleet_results WHERE tournament = '$name' GROUP BY cell ORDER BY cell) c")
-echo "PASSED: $games games over 3 cells in ${fleet_s}s ($per_cell); cell2 killed holding game(s) $held, $replayed fixture(s) leased again; cell3 cut off ${cut_s}s, paused and went on; every game stored once; the table of one host; no LCM datagram left a cell"
+echo "PASSED: $games games over 3 cells in ${fleet_s}s ($per_cell); cell2 killed holding game(s) $held, $replayed fixture(s) leased again, $twice result(s) arrived twice and were stored once; cell3 cut off ${cut_s}s, paused and went on; every game stored once; the table of one host; no LCM datagram left a cell"
