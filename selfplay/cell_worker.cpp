@@ -1,5 +1,7 @@
 #include "cell_worker.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -17,6 +19,7 @@ namespace olympics::selfplay {
 namespace {
 
 using namespace std::chrono_literals;
+constexpr const char* kSetpriv = "/usr/bin/setpriv";
 
 void sleep_s(double seconds) {
   std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
@@ -39,7 +42,16 @@ class Connection {
       }
       work(*queue_, store_.get());
     } catch (const std::runtime_error& e) {
-      if (!paused_)
+      // The database answering "no" (credentials, a missing database) will not change by waiting.
+      const std::string why = e.what();
+      for (const char* refusal :
+           {"password authentication failed", "no pg_hba.conf entry", "does not exist"})
+        if (why.find(refusal) != std::string::npos)
+          throw std::invalid_argument("the database refuses cell " + settings_.cell + ": " + why);
+      if (!paused_ && !connected_once_)
+        std::fprintf(stderr, "cell %s: cannot reach the database (%s); trying again\n",
+                     settings_.cell.c_str(), e.what());
+      else if (!paused_)
         std::fprintf(stderr,
                      "cell %s: lost the database (%s); paused: no new fixtures, finished results "
                      "kept until it is back\n",
@@ -51,6 +63,7 @@ class Connection {
     }
     if (paused_) std::fprintf(stderr, "cell %s: database back; going on\n", settings_.cell.c_str());
     paused_ = false;
+    connected_once_ = true;
     return true;
   }
 
@@ -58,6 +71,7 @@ class Connection {
   const CellSettings& settings_;
   bool with_store_;
   bool paused_ = false;
+  bool connected_once_ = false;
   std::unique_ptr<FixtureQueue> queue_;
   std::unique_ptr<LeagueStore> store_;
 };
@@ -209,14 +223,14 @@ class Cell {
   void start_server() {
     if (!settings_.spawn_server) return;
     const std::string id = server_id_of(settings_.cell);
-    std::vector<std::string> argv = {settings_.server_program,
-                                     "serve",
-                                     "--id",
-                                     id,
-                                     "--capacity",
-                                     std::to_string(settings_.runner.parallel),
-                                     "--results",
-                                     settings_.runner.log_dir + "/" + id + "-results.db"};
+    // The server dies with the cell (a cell killed by SIGKILL leaves no server behind) where
+    // util-linux's setpriv can ask the kernel for it; the policy workers, as on one host, are
+    // left to finish their games.
+    std::vector<std::string> argv;
+    if (access(kSetpriv, X_OK) == 0) argv = {kSetpriv, "--pdeathsig", "KILL", "--"};
+    argv.insert(argv.end(), {settings_.server_program, "serve", "--id", id, "--capacity",
+                             std::to_string(settings_.runner.parallel), "--results",
+                             settings_.runner.log_dir + "/" + id + "-results.db"});
     if (!settings_.runner.lcm_url.empty())
       argv.insert(argv.end(), {"--lcm-url", settings_.runner.lcm_url});
     if (!settings_.runner.secret_file.empty())

@@ -53,6 +53,7 @@ std::string secret_fingerprint(const std::string& secret_file) {
 
 std::string with_fleet_timeouts(const std::string& url) {
   std::string out = url;
+  if (url.rfind("postgresql://", 0) != 0 && url.rfind("postgres://", 0) != 0) return out;
   for (std::string setting :
        {"connect_timeout=3", "keepalives=1", "keepalives_idle=2", "keepalives_interval=1",
         "keepalives_count=2", "tcp_user_timeout=4000"}) {

@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <regex>
 #include <set>
 #include <thread>
 
@@ -174,6 +175,22 @@ TEST(Fleet, ACellWithAnotherSecretIsRefusedAndSaysSo) {
   EXPECT_NE(wrong->output().find("the queue refuses cell intruder: its secret"), std::string::npos)
       << wrong->output();
   EXPECT_EQ(FixtureQueue(url, "check").unfinished(name), 6) << "nothing taken by the intruder";
+}
+
+TEST(Fleet, ACellTheDatabaseRefusesExitsSayingWhyAndOneThatCannotReachItWaits) {
+  const std::string url = postgres_url();
+  if (url.empty()) GTEST_SKIP() << "set OLYMPICS_TEST_POSTGRES_URL (CI does)";
+  // Another password (the test URL's user with a wrong one): refused at once, with the reason.
+  const std::regex password("://([^:@/]+)(:[^@/]*)?@");
+  const std::string wrong = std::regex_replace(url, password, "://$1:not-the-password@");
+  auto refused = cell(wrong, "any", "wrong-password");
+  EXPECT_EQ(refused->wait(30), 2);
+  EXPECT_NE(refused->output().find("the database refuses cell wrong-password"), std::string::npos)
+      << refused->output();
+  // No database there (yet): the cell waits for it, saying so, rather than exiting.
+  auto waiting = cell("postgresql://olympics@127.0.0.1:1/none", "any", "early");
+  EXPECT_TRUE(waiting->wait_for_output("cannot reach the database", 30)) << waiting->output();
+  EXPECT_TRUE(waiting->running());
 }
 
 TEST(Fleet, AFixtureForASportTheCellDoesNotHostIsRefusedByNameAndKept) {
