@@ -203,6 +203,9 @@ int main(int argc, char** argv) {
 
   try {
     if (*cell_cmd) return run_cell(cell);
+    if (fleet && db.rfind("postgresql://", 0) != 0 && db.rfind("postgres://", 0) != 0)
+      throw std::invalid_argument("--fleet queues games for cells in PostgreSQL; --db " + db +
+                                  " is not a postgresql:// URL (one machine needs no fleet)");
     LeagueStore store(db);
     if (*list) {
       for (const auto& n : store.tournament_names()) {

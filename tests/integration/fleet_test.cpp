@@ -35,7 +35,8 @@ std::string unique_name(const std::string& stem) {
 
 // `olympics-league run --fleet` for a round robin of four bots; waits for it.
 void queue_tournament(const std::string& db, const std::string& name, const std::string& extra_arg,
-                      const std::string& secret = "") {
+                      const std::string& secret = "", const std::string& format = "round-robin",
+                      const std::string& entrants = "zero,random:1,random:2,zero") {
   std::vector<std::string> argv = {program("olympics-league"),
                                    "run",
                                    "--fleet",
@@ -44,7 +45,9 @@ void queue_tournament(const std::string& db, const std::string& name, const std:
                                    "--name",
                                    name,
                                    "--entrants",
-                                   "zero,random:1,random:2,zero",
+                                   entrants,
+                                   "--format",
+                                   format,
                                    "--seed",
                                    "3",
                                    "--time-limit",
@@ -160,6 +163,39 @@ TEST(Fleet, TwoCellsPlayAQueuedTournamentToTheTableOfOneHost) {
     EXPECT_EQ(board_one.rows[i].name, board_fleet.rows[i].name);
     EXPECT_EQ(board_one.rows[i].standing.points, board_fleet.rows[i].standing.points);
     EXPECT_EQ(board_one.rows[i].skill.mu, board_fleet.rows[i].skill.mu);  // bit for bit
+  }
+}
+
+// A swiss: each later round is queued by the cell that finds the round before it over; byes
+// included (five entrants), the same table as on one host.
+TEST(Fleet, ACellQueuesTheLaterRoundsOfASwissToTheTableOfOneHost) {
+  const std::string url = postgres_url();
+  if (url.empty()) GTEST_SKIP() << "set OLYMPICS_TEST_POSTGRES_URL (CI does)";
+  const std::string name = unique_name("swiss"), dir = temp_dir(), lcm = unique_lcm_url();
+  const std::string entrants = "zero,random:1,random:2,zero,random:3";
+  Process server({program("olympics-server"), "serve", "--id", "solo", "--lcm-url", lcm,
+                  "--results", dir + "/solo.db"},
+                 dir + "/solo.log");
+  Process one({program("olympics-league"), "run", "--db", dir + "/one.db", "--name", "one",
+               "--format", "swiss", "--entrants", entrants, "--seed", "3", "--time-limit", "2",
+               "--lcm-url", lcm, "--log-dir", dir, "--quiet"},
+              dir + "/one.log");
+  ASSERT_EQ(one.wait(120), 0) << one.output();
+  queue_tournament(url, name, "", "", "swiss", entrants);
+  EXPECT_EQ(FixtureQueue(url, "check").unfinished(name), 2) << "round one: two games, a bye";
+  auto c = cell(url, name, "swiss-cell");
+  ASSERT_EQ(c->wait(120), 0) << c->output();
+  selfplay::LeagueStore single(dir + "/one.db"), fleet(url);
+  auto games = fleet.games(name);
+  ASSERT_EQ(games.size(), single.games("one").size());
+  for (const auto& g : games) EXPECT_EQ(g.status, GameStatus::Done);
+  auto board_one =
+      selfplay::compute_leaderboard(*single.find_tournament("one"), single.games("one"));
+  auto board_fleet = selfplay::compute_leaderboard(*fleet.find_tournament(name), games);
+  for (size_t i = 0; i < board_one.rows.size(); ++i) {
+    EXPECT_EQ(board_one.rows[i].name, board_fleet.rows[i].name);
+    EXPECT_EQ(board_one.rows[i].standing.points, board_fleet.rows[i].standing.points);
+    EXPECT_EQ(board_one.rows[i].skill.mu, board_fleet.rows[i].skill.mu);
   }
 }
 
