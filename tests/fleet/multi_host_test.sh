@@ -177,6 +177,7 @@ ip link set "$(cat "$work/cell3.link")" down
 echo "cut cell3 off for ${cut_s}s"
 sleep "$cut_s"
 ip link set "$(cat "$work/cell3.link")" up
+back_at=$(sql "SELECT now()")
 
 for h in cell1 cell3; do
   left=$((deadline_s - ($(date +%s) - started)))
@@ -203,6 +204,8 @@ replayed=$(sql "SELECT count(*) FROM fleet_queue WHERE tournament = '$name' AND 
 # The cut-off cell paused, came back and stored results after it.
 grep -q "lost the database" "$work/cell3.log" || fail "cell3 never noticed the cut: $(tail "$work/cell3.log")"
 grep -q "database back" "$work/cell3.log" || fail "cell3 never came back: $(tail "$work/cell3.log")"
+after=$(sql "SELECT count(*) FROM fleet_results WHERE tournament = '$name' AND cell = 'cell3' AND stored_at > '$back_at'")
+[ "$after" -ge 1 ] || fail "cell3 stored nothing after its link came back"
 # The same table as on one host (JSON: points, W/D/L, mu and sigma to the last digit).
 "$bin/olympics-league" table --db "$db" --name "$name" --json > "$work/fleet-table.json"
 in_ns solo "$bin/olympics-league" table --db "$work/one.db" --name one --json > "$work/one-table.json"
@@ -215,4 +218,4 @@ sleep 0.3
 
 twice=$(cat "$work"/cell*.log | grep -c "was stored already" || true)
 per_cell=$(sql "SELECT string_agg(cell || ' ' || n, ', ') FROM (SELECT cell, count(*) n FROM fleet_results WHERE tournament = '$name' GROUP BY cell ORDER BY cell) c")
-echo "PASSED: $games games over 3 cells in ${fleet_s}s ($per_cell); cell2 killed holding game(s) $held, $replayed fixture(s) leased again, $twice result(s) arrived twice and were stored once; cell3 cut off ${cut_s}s, paused and went on; every game stored once; the table of one host; no LCM datagram left a cell"
+echo "PASSED: $games games over 3 cells in ${fleet_s}s ($per_cell); cell2 killed holding game(s) $held, $replayed fixture(s) leased again, $twice result(s) arrived twice and were stored once; cell3 cut off ${cut_s}s, paused and went on ($after stored after); every game stored once; the table of one host; no LCM datagram left a cell"
