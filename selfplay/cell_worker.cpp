@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <deque>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -192,17 +193,28 @@ class Cell {
       }
       bool worked = false, open = false;
       for (const auto& t : names) {
+        if (refused_.contains(t)) continue;
         std::vector<int> leased;
         RoundVerdict verdict = RoundVerdict::Wait;
-        if (!db_.run([&](FixtureQueue& queue, LeagueStore* store) {
-              leased = queue.lease(t, fingerprint_, settings_.batch, settings_.lease_s);
-              if (leased.empty()) verdict = queue_next_round(*store, queue, t, fingerprint_);
-            })) {
-          open = true;
-          break;
+        try {
+          if (!db_.run([&](FixtureQueue& queue, LeagueStore* store) {
+                leased = queue.lease(t, fingerprint_, settings_.batch, settings_.lease_s);
+                if (leased.empty()) verdict = queue_next_round(*store, queue, t, fingerprint_);
+              })) {
+            open = true;
+            break;
+          }
+        } catch (const std::invalid_argument& e) {  // another secret, a self-play run
+          if (!settings_.tournament.empty()) throw;
+          refuse(t, e.what());
+          continue;
         }
         if (!leased.empty()) {
-          if (int refused = play(t, leased)) return refused;
+          if (auto why = play(t, leased)) {
+            if (!settings_.tournament.empty()) return 2;
+            refuse(t, *why);
+            continue;
+          }
           worked = true;
           break;
         }
@@ -212,6 +224,11 @@ class Cell {
       if (worked) continue;
       if (!open && !settings_.keep_waiting) {
         keeper_.wait_until_flushed();
+        if (!refused_.empty()) {
+          std::fprintf(stderr, "cell %s: no work left it can play (%zu tournament(s) refused)\n",
+                       settings_.cell.c_str(), refused_.size());
+          return 2;
+        }
         std::fprintf(stderr, "cell %s: no work left\n", settings_.cell.c_str());
         return 0;
       }
@@ -239,9 +256,16 @@ class Cell {
     server_id_ = id;
   }
 
-  // Plays the leased fixtures on the cell's server(s); 0, or 2 when the cell refuses them (they
+  // A cell serving every queued tournament leaves one it cannot play to the others and goes on.
+  void refuse(const std::string& t, const std::string& why) {
+    std::fprintf(stderr, "cell %s: skips tournament %s: %s\n", settings_.cell.c_str(), t.c_str(),
+                 why.c_str());
+    refused_[t] = why;
+  }
+
+  // Plays the leased fixtures on the cell's server(s); nothing, or why the cell refuses them (they
   // go back to the queue with the reason noted).
-  int play(const std::string& t, const std::vector<int>& leased) {
+  std::optional<std::string> play(const std::string& t, const std::vector<int>& leased) {
     std::optional<TournamentSpec> spec;
     std::vector<Game> games;
     while (!db_.run([&](FixtureQueue&, LeagueStore* store) {
@@ -280,9 +304,9 @@ class Cell {
                    "cell %s refuses the fixtures of %s: %s; they are back in the queue for "
                    "another cell\n",
                    settings_.cell.c_str(), t.c_str(), e.what());
-      return 2;
+      return e.what();
     }
-    return 0;
+    return std::nullopt;
   }
 
   const CellSettings& settings_;
@@ -291,6 +315,7 @@ class Cell {
   Keeper keeper_;
   std::unique_ptr<Process> server_;
   std::string server_id_;
+  std::map<std::string, std::string> refused_;  // tournaments this cell cannot play, and why
 };
 
 }  // namespace

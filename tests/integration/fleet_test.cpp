@@ -16,6 +16,7 @@
 #include "fixture_queue.h"
 #include "leaderboard.h"
 #include "league_store.h"
+#include "sql_database.h"
 #include "test_programs.h"
 
 namespace olympics::testing {
@@ -227,6 +228,41 @@ TEST(Fleet, ACellTheDatabaseRefusesExitsSayingWhyAndOneThatCannotReachItWaits) {
   auto waiting = cell("postgresql://olympics@127.0.0.1:1/none", "any", "early");
   EXPECT_TRUE(waiting->wait_for_output("cannot reach the database", 30)) << waiting->output();
   EXPECT_TRUE(waiting->running());
+}
+
+// A cell for every queued tournament (a Deployment's) plays those it can and leaves the others to
+// other cells, saying why, rather than stopping at the first it cannot play. In a schema of its
+// own, so that other tests' tournaments are not among "every".
+TEST(Fleet, ACellForEveryTournamentPlaysThoseItCanAndSkipsTheOthersSayingWhy) {
+  const std::string base = postgres_url();
+  if (base.empty()) GTEST_SKIP() << "set OLYMPICS_TEST_POSTGRES_URL (CI does)";
+  const std::string schema = unique_name("fleet_every_"), dir = temp_dir();
+  sql::open_sql_database(base)->script("CREATE SCHEMA " + schema);
+  const std::string url = base + (base.find('?') == std::string::npos ? "?" : "&") +
+                          "options=-csearch_path%3D" + schema;
+  protocol::write_new_secret(dir + "/other.secret");
+  queue_tournament(url, "playable", "", "", "round-robin", "zero,random:1,zero");
+  queue_tournament(url, "curling", "curling");
+  queue_tournament(url, "other-secret", "", dir + "/other.secret");
+  auto every = std::make_unique<Process>(
+      std::vector<std::string>{program("olympics-league"), "cell", "--db", url, "--cell", "every",
+                               "--spawn-server", "--lcm-url", unique_lcm_url(), "--log-dir", dir,
+                               "--server-wait-s", "30"},
+      dir + "/every.log");
+  EXPECT_EQ(every->wait(120), 2) << every->output();
+  const std::string out = every->output();
+  EXPECT_NE(out.find("skips tournament curling: no server hosts the sport \"curling\""),
+            std::string::npos)
+      << out;
+  EXPECT_NE(out.find("skips tournament other-secret: the queue refuses cell every"),
+            std::string::npos)
+      << out;
+  EXPECT_NE(out.find("no work left it can play (2 tournament(s) refused)"), std::string::npos)
+      << out;
+  FixtureQueue queue(url, "check");
+  EXPECT_EQ(queue.unfinished("playable"), 0) << "the playable tournament was played";
+  EXPECT_EQ(queue.unfinished("curling"), 6);
+  EXPECT_EQ(queue.unfinished("other-secret"), 6);
 }
 
 TEST(Fleet, AFixtureForASportTheCellDoesNotHostIsRefusedByNameAndKept) {
