@@ -81,12 +81,26 @@ ip netns exec "$(ns learner)" "$bin/olympics-relay" connect --to "$cell_ip:7700"
 relay=$!
 sleep 1
 remote=$(league learner remote)
+# The trainer's Python vector environment, inside the cell and through the relay (when the
+# Python package is built): it must step there; its speed is printed, not judged.
+pypath=$(cd "$bin/../python" 2>/dev/null && pwd || true)
+vector=""
+if [ -n "$pypath" ] && PYTHONPATH=$pypath /usr/bin/python3 -c "import smpl_olympics._client" 2>/dev/null; then
+  bench=$(cd "$(dirname "$0")/../../benchmarks" && pwd)/relay_vector_bench.py
+  for h in cell learner; do
+    in_ns "$h" env PYTHONPATH="$pypath" /usr/bin/python3 "$bench" 4 200 "$work/secret" \
+      > "$work/vector-$h.log" 2>&1 || fail "the vector env on the $h host: $(tail -3 "$work/vector-$h.log")"
+  done
+  vector=" Vector env, 4 tennis matches: inside the cell $(tail -1 "$work/vector-cell.log"); through the relay $(tail -1 "$work/vector-learner.log")."
+else
+  vector=" (Python package not built: the vector env was not run)"
+fi
 kill -TERM $relay
 wait $relay || true
 in_ns cell "$bin/olympics-league" table --db "$work/inside.db" --name inside --json > "$work/a.json"
 in_ns cell "$bin/olympics-league" table --db "$work/remote.db" --name remote --json > "$work/b.json"
 cmp -s "$work/a.json" "$work/b.json" || fail "tables differ: $(diff "$work/a.json" "$work/b.json")"
 ticks=$(sqlite3 "$work/remote.db" "SELECT sum(ticks) FROM games")
-printf "PASSED: 6 %s games (%s ticks): from inside the cell %.1f s, from the learner host through the relay %.1f s (%.2fx); the same table; another secret refused. %s\n" \
+printf "PASSED: 6 %s games (%s ticks): from inside the cell %.1f s, from the learner host through the relay %.1f s (%.2fx); the same table; another secret refused. %s%s\n" \
   "$sport" "$ticks" "$inside" "$remote" "$(echo "$remote / $inside" | bc -l)" \
-  "$(tail -1 "$work/relay-learner.log")"
+  "$(tail -1 "$work/relay-learner.log")" "$vector"
