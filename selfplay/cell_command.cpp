@@ -21,6 +21,10 @@ void add_cell_options(CLI::App& cmd, CellSettings& s) {
                "stay for tournaments queued later when there is no work (a Deployment)");
   cmd.add_flag("--spawn-server", s.spawn_server,
                "start this cell's olympics-server (id: the cell's name) beside this process");
+  cmd.add_option("--server-capacity", s.server_capacity,
+                 "matches the spawned server hosts at once (default --parallel; more leaves room "
+                 "for a remote learner's matches)")
+      ->check(CLI::NonNegativeNumber);
   cmd.add_option("--health-file", s.health_file,
                  "touched every second while the cell runs (a liveness exec probe)");
   cmd.add_option("--lcm-url", s.runner.lcm_url,

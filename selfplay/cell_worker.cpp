@@ -245,9 +245,11 @@ class Cell {
     // left to finish their games.
     std::vector<std::string> argv;
     if (access(kSetpriv, X_OK) == 0) argv = {kSetpriv, "--pdeathsig", "KILL", "--"};
-    argv.insert(argv.end(), {settings_.server_program, "serve", "--id", id, "--capacity",
-                             std::to_string(settings_.runner.parallel), "--results",
-                             settings_.runner.log_dir + "/" + id + "-results.db"});
+    argv.insert(argv.end(),
+                {settings_.server_program, "serve", "--id", id, "--capacity",
+                 std::to_string(settings_.server_capacity > 0 ? settings_.server_capacity
+                                                              : settings_.runner.parallel),
+                 "--results", settings_.runner.log_dir + "/" + id + "-results.db"});
     if (!settings_.runner.lcm_url.empty())
       argv.insert(argv.end(), {"--lcm-url", settings_.runner.lcm_url});
     if (!settings_.runner.secret_file.empty())

@@ -24,6 +24,7 @@ struct CellSettings {
   bool keep_waiting = false;   // stay when there is no work left (a Deployment), else exit 0
   bool spawn_server = false;   // start the cell's olympics-server (else one runs there already)
   std::string server_program;  // its program (olympics-server beside this one)
+  int server_capacity = 0;     // its matches at once (0: --parallel; more leaves room for learners)
   std::string health_file;     // touched every second while the cell is well (an exec probe)
   RunnerSettings runner;       // how games are played inside the cell
 };

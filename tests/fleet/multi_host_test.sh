@@ -33,7 +33,7 @@ net=10.$((200 + $$ % 50)).$(($$ % 250))
 bridge=br$tag
 work=$(mktemp -d /tmp/fleet-test-XXXXXX)
 chmod 755 "$work"
-hosts=(db cell1 cell2 cell3 solo)
+hosts=(db cell1 cell2 cell3 solo learner)
 ns() { echo "$tag-$1"; }
 in_ns() { local h=$1; shift; ip netns exec "$(ns "$h")" "$@"; }
 
@@ -83,6 +83,7 @@ add_host cell1 "$net.11"
 add_host cell2 "$net.12"
 add_host cell3 "$net.13"
 add_host solo "$net.20"
+add_host learner "$net.30"
 
 # The PostgreSQL host: a cluster of its own, reachable from the bridge's network only.
 mkdir "$work/pg" && chown postgres "$work/pg"
@@ -132,16 +133,58 @@ name=fleet$$
 "$bin/olympics-league" run --fleet --db "$db" --name "$name" --entrants "$list" --seed 5 \
   --time-limit "$time_limit" --secret "$work/secret" > "$work/queue.log" 2>&1 || fail "queueing: $(cat "$work/queue.log")"
 
+wait_for() {  # wait_for WHAT SECONDS CONDITION...
+  local what=$1 seconds=$2; shift 2
+  for _ in $(seq $((seconds * 5))); do "$@" && return 0; sleep 0.2; done
+  fail "waited ${seconds}s for $what"
+}
 start_cell() {
   local h=$1
+  shift
   mkdir -p "$work/$h"
-  in_ns "$h" "$bin/olympics-league" cell --db "$db" --name "$name" --cell "$h" --spawn-server \
+  in_ns "$h" "$bin/olympics-league" cell --db "$db" --name "$name" --cell "$h" --spawn-server "$@" \
     --batch 2 --parallel 2 --lease-s "$lease_s" --secret "$work/secret" --log-dir "$work/$h" \
     > "$work/$h.log" 2>&1 &
   echo $! > "$work/$h.pid"
 }
 started=$(date +%s)
-for h in cell1 cell2 cell3; do start_cell "$h"; done
+start_cell cell1 --server-capacity 3  # room for the learner's match beside the league's two
+start_cell cell2
+start_cell cell3
+
+# The learner's host: a trainer's vector env (one tennis match) on cell1 through olympics-relay,
+# stepping all along; it must keep stepping while cell2 dies and cell3 is cut off.
+pypath=$(cd "$bin/../python" 2>/dev/null && pwd || true)
+learner=no
+if [ -n "$pypath" ] && PYTHONPATH=$pypath $python -c "import smpl_olympics._client" 2>/dev/null; then
+  learner=yes
+  in_ns cell1 "$bin/olympics-relay" listen --port 7700 --secret "$work/secret" \
+    > "$work/relay-cell1.log" 2>&1 &
+  sleep 0.5
+  in_ns learner "$bin/olympics-relay" connect --to "$net.11:7700" --secret "$work/secret" \
+    > "$work/relay-learner.log" 2>&1 &
+  in_ns learner env PYTHONPATH="$pypath" $python - "$work/learner-steps" "$work/secret" \
+    > "$work/learner.log" 2>&1 <<'EOF2' &
+import sys
+import numpy as np
+from smpl_olympics.vector_env import OlympicsVectorEnv
+out, secret = sys.argv[1], sys.argv[2]
+env = OlympicsVectorEnv(1, sport="tennis", mode="1v1", seed=7, time_limit_s=600,
+                        secret_file=secret, server_id="cell1")
+env.reset()
+actions = np.zeros(env.action_space.shape, np.float32)
+steps = 0
+while True:
+    env.step(actions)
+    steps += 1
+    if steps % 10 == 0:
+        open(out + ".new", "w").write(str(steps))
+        __import__("os").replace(out + ".new", out)
+EOF2
+fi
+learner_steps() { cat "$work/learner-steps" 2>/dev/null || echo 0; }
+stepped() { [ "$(learner_steps)" -ge "$1" ]; }
+[ $learner = no ] || wait_for "the learner to step" 120 stepped 10
 # The same tournament on one host, from SQLite, at the same time.
 in_ns solo "$bin/olympics-server" serve --id solo --results "$work/solo-results.db" \
   --secret "$work/secret" \
@@ -151,11 +194,6 @@ in_ns solo "$bin/olympics-league" run --db "$work/one.db" --name one --entrants 
   > "$work/one.log" 2>&1 &
 solo_league=$!
 
-wait_for() {  # wait_for WHAT SECONDS CONDITION...
-  local what=$1 seconds=$2; shift 2
-  for _ in $(seq $((seconds * 5))); do "$@" && return 0; sleep 0.2; done
-  fail "waited ${seconds}s for $what"
-}
 holds_game() {  # the cell has stored a game and holds one now
   [ "$(sql "SELECT count(*) FROM fleet_results WHERE tournament = '$name' AND cell = '$1'")" -ge 1 ] &&
     [ "$(sql "SELECT count(*) FROM fleet_queue WHERE tournament = '$name' AND cell = '$1' AND state = 'leased'")" -ge 1 ]
@@ -175,7 +213,9 @@ echo "killed cell2 holding games $held"
 wait_for "cell3 to hold a game" 120 holds_game cell3
 ip link set "$(cat "$work/cell3.link")" down
 echo "cut cell3 off for ${cut_s}s"
+steps_at_cut=$(learner_steps)
 sleep "$cut_s"
+steps_after_cut=$(learner_steps)
 ip link set "$(cat "$work/cell3.link")" up
 back_at=$(sql "SELECT now()")
 
@@ -211,6 +251,13 @@ after=$(sql "SELECT count(*) FROM fleet_results WHERE tournament = '$name' AND c
 in_ns solo "$bin/olympics-league" table --db "$work/one.db" --name one --json > "$work/one-table.json"
 cmp -s "$work/fleet-table.json" "$work/one-table.json" ||
   fail "tables differ: $(diff "$work/one-table.json" "$work/fleet-table.json" | head -20)"
+# The learner kept stepping on cell1 through the faults.
+learner_note="no learner (the Python package is not built)"
+if [ $learner = yes ]; then
+  [ "$steps_after_cut" -gt "$steps_at_cut" ] ||
+    fail "the learner did not step while cell3 was cut off ($steps_at_cut -> $steps_after_cut): $(tail -3 "$work/learner.log")"
+  learner_note="the learner's vector env stepped on cell1 through the relay all along ($steps_at_cut -> $steps_after_cut steps during the cut, $(learner_steps) in all)"
+fi
 # No LCM datagram left any cell: the listener heard only the control.
 kill -TERM $listener
 sleep 0.3
@@ -218,4 +265,4 @@ sleep 0.3
 
 twice=$(cat "$work"/cell*.log | grep -c "was stored already" || true)
 per_cell=$(sql "SELECT string_agg(cell || ' ' || n, ', ') FROM (SELECT cell, count(*) n FROM fleet_results WHERE tournament = '$name' GROUP BY cell ORDER BY cell) c")
-echo "PASSED: $games games over 3 cells in ${fleet_s}s ($per_cell); cell2 killed holding game(s) $held, $replayed fixture(s) leased again, $twice result(s) arrived twice and were stored once; cell3 cut off ${cut_s}s, paused and went on ($after stored after); every game stored once; the table of one host; no LCM datagram left a cell"
+echo "PASSED: $games games over 3 cells in ${fleet_s}s ($per_cell); cell2 killed holding game(s) $held, $replayed fixture(s) leased again, $twice result(s) arrived twice and were stored once; cell3 cut off ${cut_s}s, paused and went on ($after stored after); every game stored once; the table of one host; no LCM datagram left a cell; $learner_note"
