@@ -6,7 +6,7 @@
 # learner host: the tables must be identical; the wall time of each is printed (what the relay
 # costs). A relay with another secret is refused and says so.
 #
-#   tests/fleet/remote_learner_test.sh BIN_DIR     # RELAY_SPORT=tennis RELAY_TIME_LIMIT=10
+#   tests/fleet/remote_learner_test.sh BIN_DIR     # RELAY_SPORT=tennis RELAY_TIME_LIMIT=5 (s)
 #
 # Needs root (namespaces); exits 77 (ctest: skipped, and says why) without it.
 set -euo pipefail
