@@ -85,7 +85,11 @@ class Keeper {
   explicit Keeper(const CellSettings& settings)
       : settings_(settings), db_(settings, false), thread_([this](std::stop_token stop) {
           while (!stop.stop_requested()) {
-            tick();
+            try {
+              tick();
+            } catch (const std::exception& e) {  // a refusal the main thread meets too: go on
+              std::fprintf(stderr, "cell %s: %s\n", settings_.cell.c_str(), e.what());
+            }
             std::this_thread::sleep_for(200ms);
           }
         }) {}
