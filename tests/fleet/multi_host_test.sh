@@ -183,8 +183,8 @@ while True:
 EOF2
 fi
 learner_steps() { cat "$work/learner-steps" 2>/dev/null || echo 0; }
-stepped() { [ "$(learner_steps)" -ge "$1" ]; }
-[ $learner = no ] || wait_for "the learner to step" 120 stepped 10
+# (Not waited for: the faults come while the tournament is young; the learner must be stepping
+# by the end of cell3's cut, whenever it started.)
 # The same tournament on one host, from SQLite, at the same time.
 in_ns solo "$bin/olympics-server" serve --id solo --results "$work/solo-results.db" \
   --secret "$work/secret" \
@@ -200,8 +200,17 @@ holds_game() {  # the cell has stored a game and holds one now
 }
 
 # Fault 1: cell2's host dies mid-match (its policy workers playing a game it holds).
-agents_in() { ip netns pids "$(ns "$1")" | xargs -r ps -o comm= -p | grep -c olympics-agent || true; }
-playing() { holds_game "$1" && [ "$(agents_in "$1")" -ge 1 ]; }
+agents_in() {  # policy workers running in the host's namespace (read from /proc: quick)
+  local n=0 pid
+  for pid in $(ip netns pids "$(ns "$1")"); do
+    [ "$(cat "/proc/$pid/comm" 2>/dev/null)" = olympics-agent ] && n=$((n + 1))
+  done
+  echo $n
+}
+playing() {  # workers running now, and a game leased: checked in that order, the cheap one first
+  [ "$(agents_in "$1")" -ge 1 ] &&
+    [ "$(sql "SELECT count(*) FROM fleet_queue WHERE tournament = '$name' AND cell = '$1' AND state = 'leased'")" -ge 1 ]
+}
 wait_for "cell2 to be playing a game" 120 playing cell2
 for pid in $(ip netns pids "$(ns cell2)"); do kill -9 "$pid" 2>/dev/null || true; done
 # What it held when it died (a result it stored an instant before is not among them).
@@ -244,8 +253,11 @@ replayed=$(sql "SELECT count(*) FROM fleet_queue WHERE tournament = '$name' AND 
 # The cut-off cell paused, came back and stored results after it.
 grep -q "lost the database" "$work/cell3.log" || fail "cell3 never noticed the cut: $(tail "$work/cell3.log")"
 grep -q "database back" "$work/cell3.log" || fail "cell3 never came back: $(tail "$work/cell3.log")"
+# What it finished meanwhile reached the queue once it was back: stored, or (when its lease had
+# run out and another cell played the game too) found stored already.
 after=$(sql "SELECT count(*) FROM fleet_results WHERE tournament = '$name' AND cell = 'cell3' AND stored_at > '$back_at'")
-[ "$after" -ge 1 ] || fail "cell3 stored nothing after its link came back"
+twice3=$(grep -c "was stored already" "$work/cell3.log" || true)
+[ $((after + twice3)) -ge 1 ] || fail "cell3 handed in nothing after its link came back"
 # The same table as on one host (JSON: points, W/D/L, mu and sigma to the last digit).
 "$bin/olympics-league" table --db "$db" --name "$name" --json > "$work/fleet-table.json"
 in_ns solo "$bin/olympics-league" table --db "$work/one.db" --name one --json > "$work/one-table.json"
@@ -265,4 +277,4 @@ sleep 0.3
 
 twice=$(cat "$work"/cell*.log | grep -c "was stored already" || true)
 per_cell=$(sql "SELECT string_agg(cell || ' ' || n, ', ') FROM (SELECT cell, count(*) n FROM fleet_results WHERE tournament = '$name' GROUP BY cell ORDER BY cell) c")
-echo "PASSED: $games games over 3 cells in ${fleet_s}s ($per_cell); cell2 killed holding game(s) $held, $replayed fixture(s) leased again, $twice result(s) arrived twice and were stored once; cell3 cut off ${cut_s}s, paused and went on ($after stored after); every game stored once; the table of one host; no LCM datagram left a cell; $learner_note"
+echo "PASSED: $games games over 3 cells in ${fleet_s}s ($per_cell); cell2 killed holding game(s) $held, $replayed fixture(s) leased again, $twice result(s) arrived twice and were stored once; cell3 cut off ${cut_s}s, paused and went on ($after stored after it, $twice3 found stored already); every game stored once; the table of one host; no LCM datagram left a cell; $learner_note"
