@@ -24,6 +24,7 @@ namespace olympics::bench {
   X(combat)                    \
   X(soak)                      \
   X(vector)                    \
+  X(fleet)                     \
   /* the list's end */
 // clang-format on
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the pinned Python packages the tests need from the package index
 # (clients/python/test-requirements.txt: PettingZoo and Gymnasium, whose own conformance tests
-# tests/python/test_pettingzoo.py runs) into the Python the build uses for its tests: Debian's
+# tests/python/test_pettingzoo.py runs; deploy/test-requirements.txt: kubernetes-validate, the
+# Kubernetes API schemas tests/deploy/validate_manifests.py checks the manifests against) into the Python the build uses for its tests: Debian's
 # /usr/bin/python3 (clients/CMakeLists.txt), or $PYTHON. Debian marks its Python "externally
 # managed", so this installs into the user's site packages with --break-system-packages; Debian's
 # own numpy is pinned as a constraint, so nothing here replaces it.
@@ -17,6 +18,7 @@ echo "Python test packages for $python ($("$python" --version 2>&1)):"
 where=(--user --break-system-packages)
 if "$python" -c 'import sys; sys.exit(sys.prefix == sys.base_prefix)'; then where=(); fi
 "$python" -m pip install "${where[@]}" --quiet --disable-pip-version-check \
-  -r "$repo/clients/python/test-requirements.txt" -c "$constraints"
+  -r "$repo/clients/python/test-requirements.txt" -r "$repo/deploy/test-requirements.txt" \
+  -c "$constraints"
 "$python" -c 'import pettingzoo, gymnasium, numpy
 print("pettingzoo", pettingzoo.__version__, "gymnasium", gymnasium.__version__, "numpy", numpy.__version__)'

@@ -14,6 +14,8 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "cell_command.h"
+#include "fixture_queue.h"
 #include "leaderboard.h"
 #include "league_store.h"
 #include "matchmaking.h"
@@ -131,8 +133,11 @@ int main(int argc, char** argv) {
   run->add_option("--secret", runner.secret_file,
                   "the deployment's secret file (default $OLYMPICS_SECRET_FILE; docs/security.md)");
   run->add_option("--log-dir", runner.log_dir, "policy workers' logs");
-  bool quiet = false, resume_as_stored = false;
+  bool quiet = false, resume_as_stored = false, fleet = false;
   run->add_flag("--quiet", quiet, "no progress bar");
+  run->add_flag("--fleet", fleet,
+                "queue the games in --db (PostgreSQL) for cells to play (olympics-league cell), "
+                "instead of playing them from here");
   run->add_flag("--resume-as-stored", resume_as_stored,
                 "resume a tournament of this name as stored even if flags given differ");
 
@@ -178,6 +183,11 @@ int main(int argc, char** argv) {
                   "resume a run of this name as stored even if flags given differ");
   }
 
+  CellSettings cell;
+  auto* cell_cmd = app.add_subcommand(
+      "cell", "play queued tournaments of a fleet on this cell's server (docs/deploy.md)");
+  add_cell_options(*cell_cmd, cell);
+
   std::string svg;
   bool json = false;
   auto* table = app.add_subcommand("table", "print a tournament's table (and plot its ratings)");
@@ -192,6 +202,10 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   try {
+    if (*cell_cmd) return run_cell(cell);
+    if (fleet && db.rfind("postgresql://", 0) != 0 && db.rfind("postgres://", 0) != 0)
+      throw std::invalid_argument("--fleet queues games for cells in PostgreSQL; --db " + db +
+                                  " is not a postgresql:// URL (one machine needs no fleet)");
     LeagueStore store(db);
     if (*list) {
       for (const auto& n : store.tournament_names()) {
@@ -233,6 +247,17 @@ int main(int argc, char** argv) {
         spec.entrants = *sp ? (bots.empty() ? std::vector<Entrant>{} : parse_entrants(bots, 1))
                             : parse_entrants(entrants, 2);
         store.create_tournament(spec);
+      }
+      if (fleet) {
+        FixtureQueue queue(db, "queue");
+        const auto verdict =
+            queue_next_round(store, queue, name, secret_fingerprint(runner.secret_file));
+        std::printf(
+            "%s: %d games queued in %s%s; cells play them: olympics-league cell --db URL "
+            "--name %s\n",
+            name.c_str(), queue.unfinished(name), db.c_str(),
+            verdict == RoundVerdict::Finished ? " (finished)" : "", name.c_str());
+        return 0;
       }
       runner.agent_program = olympics::program_beside_this_one("olympics-agent");
       runner.progress = !quiet;

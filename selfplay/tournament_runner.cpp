@@ -338,6 +338,7 @@ void TournamentRunner::on_result(const olympics::match_result_t& result) {
     g.reason = result.reason;
     g.ticks = result.ticks;
     save(g);
+    if (settings_.on_game_done) settings_.on_game_done(g);
     in_flight_.erase(g.index);
     show_progress();
     return;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -33,6 +34,8 @@ struct RunnerSettings {
                                      // request unanswered this long: another server is tried
   bool progress = true;              // a progress bar on stderr
   std::string secret_file;           // "" = $OLYMPICS_SECRET_FILE, or none; its workers get it too
+  // Told each game's result once it is stored (a fleet's cell hands it on to the queue).
+  std::function<void(const Game&)> on_game_done;
 };
 
 // The slots of `team` from a match's slot-to-team mapping (match_created_t.slot_team), in slot
