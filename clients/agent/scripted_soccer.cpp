@@ -11,17 +11,22 @@ namespace {
 
 using namespace smpl;
 
-constexpr double kBehind_m = 0.7;      // the approach point, behind the ball
-constexpr double kLinedUp_m = 0.35;    // off the ball-to-goal line by less than this: lined up
-constexpr double kLoseLine_m = 0.6;    // ...and it stops pushing when further off than this
-constexpr double kThrough_m = 0.6;     // while pushing, it walks to this far past the ball
-constexpr double kKeepBack_m = 3.8;    // from the ball while the other side restarts
-constexpr double kDefend_m = 5.0;      // the second player, this far out from its own goal
-constexpr double kDownBelow_m = -0.4;  // a teammate's root this far below mine: it is down
-
-Eigen::Vector2d xy(std::span<const float> o, int at) { return {o[at], o[at + 1]}; }
+constexpr double kBehind_m = 0.7;        // the approach point, behind the ball
+constexpr double kLinedUp_m = 0.35;      // off the ball-to-aim line by less than this: lined up
+constexpr double kLoseLine_m = 0.6;      // ...and it stops pushing when further off than this
+constexpr double kThrough_m = 0.6;       // while pushing, it walks to this far past the ball
+constexpr double kKeepBack_m = 3.8;      // from the ball while the other side restarts
+constexpr double kDefend_m = 5.0;        // the second player, this far out from its own goal
+constexpr double kDownBelow_m = -0.4;    // a teammate's root this far below mine: it is down
+constexpr double kKeeperNear_m = 3.0;    // an opponent this near the goal I attack keeps it
+constexpr double kShotAim_m = 1.3;       // ...and I aim this far off the goal's middle, away
+constexpr double kKeeperOut_m = 0.5;     // a keeper stands this far in front of its line
+constexpr double kPostInside_m = 1.7;    // ...and no further across than this from the middle
+constexpr double kShotComing_mps = 1.0;  // a ball closing on the goal faster than this: a shot
+constexpr double kFollowBall = 0.3;      // not a shot: the keeper follows the ball's side by this
 
 double bearing(const Eigen::Vector2d& v) { return std::atan2(v.y(), v.x()); }
+Eigen::Vector2d left_of(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
 
 }  // namespace
 
@@ -29,44 +34,87 @@ void ScriptedSoccerPolicy::start(const MatchInfo& match) {
   if (match.sport != "soccer")
     throw std::invalid_argument("the scripted soccer policy plays soccer, not " + match.sport);
   const ObservationLayout& l = match.observation;
-  blocks_ = {l.offset("ball"), l.offset("goals"), l.has("teammates") ? l.offset("teammates") : -1,
+  blocks_ = {l.offset("ball"),
+             l.offset("goals"),
+             l.has("teammates") ? l.offset("teammates") : -1,
+             l.has("opponents") ? l.offset("opponents") : -1,
+             l.has("opponents") ? l.size("opponents") / 6 : 0,
              l.offset("match")};
-  StepGains gains;
-  gains.turn_start = 0.5;
-  legs_.emplace(gains, match.control_dt);
+  control_dt_ = match.control_dt;
+  keeper_mode_ = match.mode == "penalty_kick_keeper";
+  keeper_.reset();
+  legs_.reset();
   lined_up_ = false;
 }
 
+ScriptedSoccerPolicy::View ScriptedSoccerPolicy::see(std::span<const float> o) const {
+  const Blocks& at = blocks_;
+  View v;
+  v.ball = vec3(o, at.ball);
+  v.ball_velocity = vec3(o, at.ball + 3);
+  v.goal = {o[at.goals], o[at.goals + 1]};
+  v.own_goal = {o[at.goals + 3], o[at.goals + 4]};
+  if (at.teammates >= 0) {
+    v.teammate = Eigen::Vector2d(o[at.teammates], o[at.teammates + 1]);
+    v.mate_down = o[at.teammates + 2] < kDownBelow_m;
+  }
+  for (int k = 0; k < at.opponent_count; ++k)
+    v.opponents.emplace_back(o[at.opponents + 6 * k], o[at.opponents + 6 * k + 1]);
+  v.theirs_to_take = o[at.match + 3] < -0.5;
+  return v;
+}
+
+void ScriptedSoccerPolicy::walk(std::span<const float> o, const Eigen::Vector2d& to, double turn,
+                                std::span<float> a) {
+  if (!legs_) {
+    StepGains gains;
+    gains.turn_start = 0.5;
+    legs_.emplace(gains, control_dt_);
+  }
+  legs_->act(o, to, turn, a);
+}
+
 void ScriptedSoccerPolicy::act(std::span<const float> o, std::span<float> a) {
-  if (!legs_) throw std::logic_error("ScriptedSoccerPolicy: act() before start()");
+  if (control_dt_ <= 0) throw std::logic_error("ScriptedSoccerPolicy: act() before start()");
   if (a.size() != kActions)
     throw std::invalid_argument("the scripted soccer policy drives the SMPL humanoid (69 actions)");
   std::fill(a.begin(), a.end(), 0.0f);
-  const Blocks& at = blocks_;
-  const Eigen::Vector2d ball = xy(o, at.ball), goal = xy(o, at.goals),
-                        own_goal = xy(o, at.goals + 3);
-  const bool theirs_to_take = o[at.match + 3] < -0.5;
+  const View v = see(o);
+  // The keeper is the one whose own goal is near at the start.
+  if (!keeper_) keeper_ = keeper_mode_ && v.own_goal.norm() < 3.0;
 
-  if (theirs_to_take) {
+  if (*keeper_) return keep_goal(o, v, a);
+  if (v.theirs_to_take) {
     lined_up_ = false;
-    const Eigen::Vector2d back = ball + (own_goal - ball).normalized() * kKeepBack_m;
-    return legs_->act(o, back, bearing(ball), a);
+    const Eigen::Vector2d ball = v.ball.head<2>();
+    const Eigen::Vector2d back = ball + (v.own_goal - ball).normalized() * kKeepBack_m;
+    return walk(o, back, bearing(ball), a);
   }
   // One chaser per side: whoever is nearer the ball (each of the two sees the same distances),
-  // unless the teammate is down (its root far below mine).
-  const bool mate_down = at.teammates >= 0 && o[at.teammates + 2] < kDownBelow_m;
-  const bool chaser =
-      at.teammates < 0 || mate_down || ball.norm() < (ball - xy(o, at.teammates)).norm();
+  // unless the teammate is down.
+  const Eigen::Vector2d ball = v.ball.head<2>();
+  const bool chaser = !v.teammate || v.mate_down || ball.norm() < (ball - *v.teammate).norm();
   if (!chaser) {
     lined_up_ = false;
-    const Eigen::Vector2d to_ball = ball - own_goal;
+    const Eigen::Vector2d to_ball = ball - v.own_goal;
     const Eigen::Vector2d guard =
-        own_goal + to_ball.normalized() * std::min(kDefend_m, 0.5 * to_ball.norm());
-    return legs_->act(o, guard, bearing(ball), a);
+        v.own_goal + to_ball.normalized() * std::min(kDefend_m, 0.5 * to_ball.norm());
+    return walk(o, guard, bearing(ball), a);
   }
+  chase(o, v, a);
+}
 
-  // Where I stand against the line from the ball to the goal: `along` < 0 behind the ball.
-  const Eigen::Vector2d dir = (goal - ball).normalized();
+void ScriptedSoccerPolicy::chase(std::span<const float> o, const View& v, std::span<float> a) {
+  const Eigen::Vector2d ball = v.ball.head<2>();
+  // The shot: at the goal's middle, or with a keeper there, inside the post away from it.
+  const Eigen::Vector2d attack = (v.goal - v.own_goal).normalized(), across = left_of(attack);
+  Eigen::Vector2d aim = v.goal;
+  for (const Eigen::Vector2d& p : v.opponents)
+    if ((p - v.goal).norm() < kKeeperNear_m)
+      aim = v.goal - across * kShotAim_m * ((p - v.goal).dot(across) >= 0 ? 1 : -1);
+
+  // Where I stand against the line from the ball to the aim: `along` < 0 behind the ball.
+  const Eigen::Vector2d dir = (aim - ball).normalized();
   const Eigen::Vector2d me = -ball;  // my root, relative to the ball
   const double along = me.dot(dir);
   const double off_line = std::abs(dir.x() * me.y() - dir.y() * me.x());
@@ -74,7 +122,7 @@ void ScriptedSoccerPolicy::act(std::span<const float> o, std::span<float> a) {
     lined_up_ = along < 0.1 && off_line < kLoseLine_m;
   else
     lined_up_ = along < -0.2 && along > -kBehind_m - 0.4 && off_line < kLinedUp_m;
-  if (lined_up_) return legs_->act(o, ball + dir * kThrough_m, bearing(dir), a);
+  if (lined_up_) return walk(o, ball + dir * kThrough_m, bearing(dir), a);
 
   Eigen::Vector2d target = ball - dir * kBehind_m;
   if (along > -0.3 && off_line < 0.9) {
@@ -83,7 +131,21 @@ void ScriptedSoccerPolicy::act(std::span<const float> o, std::span<float> a) {
     const double side = perp.dot(me) >= 0 ? 1 : -1;
     target = ball - dir * (kBehind_m + 0.3) + perp * side * 1.0;
   }
-  legs_->act(o, target, bearing(target.norm() > 1.0 ? target : dir), a);
+  walk(o, target, bearing(target.norm() > 1.0 ? target : dir), a);
+}
+
+void ScriptedSoccerPolicy::keep_goal(std::span<const float> o, const View& v, std::span<float> a) {
+  const Eigen::Vector2d ball = v.ball.head<2>(), vel = v.ball_velocity.head<2>();
+  const Eigen::Vector2d out = (v.goal - v.own_goal).normalized(), across = left_of(out);
+  // Across the line: where a shot coming at the goal will cross it, else toward the ball's side.
+  // It faces the ball, arms out at its sides (the zero pose): a wide body across the shot.
+  const double ball_out = (ball - v.own_goal).dot(out), closing = -vel.dot(out);
+  double y = (ball - v.own_goal).dot(across) * kFollowBall;
+  if (closing > kShotComing_mps && ball_out > 0)
+    y = (ball - v.own_goal).dot(across) + vel.dot(across) * ball_out / closing;
+  y = std::clamp(y, -kPostInside_m, kPostInside_m);
+  const Eigen::Vector2d spot = v.own_goal + out * kKeeperOut_m + across * y;
+  walk(o, spot, bearing(ball), a);
 }
 
 std::unique_ptr<Policy> make_scripted_soccer() { return std::make_unique<ScriptedSoccerPolicy>(); }
