@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "control/body_model.h"
+#include "scripted_soccer_kick.h"
 #include "smpl_observation.h"
 
 namespace olympics::client {
@@ -11,15 +13,28 @@ namespace {
 
 using namespace smpl;
 
-constexpr double kBehind_m = 0.7;        // the approach point, behind the ball
-constexpr double kLinedUp_m = 0.35;      // off the ball-to-aim line by less than this: lined up
-constexpr double kLoseLine_m = 0.6;      // ...and it stops pushing when further off than this
-constexpr double kThrough_m = 0.6;       // while pushing, it walks to this far past the ball
-constexpr double kKeepBack_m = 3.8;      // from the ball while the other side restarts
-constexpr double kDefend_m = 5.0;        // the second player, this far out from its own goal
-constexpr double kDownBelow_m = -0.4;    // a teammate's root this far below mine: it is down
-constexpr double kKeeperNear_m = 3.0;    // an opponent this near the goal I attack keeps it
-constexpr double kShotAim_m = 1.3;       // ...and I aim this far off the goal's middle, away
+constexpr double kBehind_m = 0.7;      // the approach point, behind the ball
+constexpr double kLinedUp_m = 0.35;    // off the ball-to-aim line by less than this: lined up
+constexpr double kLoseLine_m = 0.6;    // ...and it stops pushing when further off than this
+constexpr double kThrough_m = 0.6;     // while pushing, it walks to this far past the ball
+constexpr double kKeepBack_m = 3.8;    // from the ball while the other side restarts
+constexpr double kDefend_m = 5.0;      // the second player, this far out from its own goal
+constexpr double kDownBelow_m = -0.4;  // a teammate's root this far below mine: it is down
+constexpr double kKeeperNear_m = 3.0;  // an opponent this near the goal I attack keeps it
+constexpr double kShotAim_m = 1.3;     // ...and I aim this far off the goal's middle, away
+// The kick (penalty modes).
+constexpr double kKickFrom_m = 0.12;         // this close to where a kick starts: kick
+constexpr double kSettled_mps = 0.45;        // ...walking no faster than this
+constexpr double kAtRest_mps = 0.15;         // ...a ball this slow
+constexpr double kKickFacing = 0.4;          // ...facing the kick's line within this, rad
+constexpr double kRolling_mps = 0.5;         // a ball faster than this is followed, not kicked
+constexpr double kKnockedAway_mps = 2.5;     // a kick gives up on a ball knocked this fast
+constexpr double kDown_m = 0.6;              // ...and on a body whose root is this low
+constexpr double kKickerWalk_mps = 0.8;      // a kicker's walking speed (StepGains::max_speed)
+constexpr double kKickerWalkPerM = 1.5;      // ...and its StepGains::speed_per_m
+constexpr double kArriveSpeed_mps = 3.0;     // a shot is kicked to be this fast at the goal line
+constexpr double kRollingDecel_mps2 = 0.85;  // a rolling ball slows by about this (c_rr 0.08)
+constexpr double kMaxShot_mps = 8.0;
 constexpr double kKeeperOut_m = 0.5;     // a keeper stands this far in front of its line
 constexpr double kPostInside_m = 1.7;    // ...and no further across than this from the middle
 constexpr double kShotComing_mps = 1.0;  // a ball closing on the goal faster than this: a shot
@@ -45,6 +60,16 @@ void ScriptedSoccerPolicy::start(const MatchInfo& match) {
   keeper_.reset();
   legs_.reset();
   lined_up_ = false;
+  // Penalty kicks are kicked; in matches the chaser dribbles (a kick falls too often yet, and
+  // an opponent reaches a ball at rest before a kick is wound up).
+  if (match.mode.rfind("penalty_kick", 0) == 0) {
+    if (!model_)
+      model_ = std::make_shared<control::BodyModel>(
+          control::BodyModel::humanoid(core::HumanoidKind::Smpl));
+    kick_ = std::make_shared<SoccerKick>(*model_, control_dt_);
+  } else {
+    kick_.reset();
+  }
 }
 
 ScriptedSoccerPolicy::View ScriptedSoccerPolicy::see(std::span<const float> o) const {
@@ -69,6 +94,11 @@ void ScriptedSoccerPolicy::walk(std::span<const float> o, const Eigen::Vector2d&
   if (!legs_) {
     StepGains gains;
     gains.turn_start = 0.5;
+    if (kick_) {
+      // A kicker walks slower: it stops where a kick starts, not a step past it.
+      gains.max_speed = kKickerWalk_mps;
+      gains.speed_per_m = kKickerWalkPerM;
+    }
     legs_.emplace(gains, control_dt_);
   }
   legs_->act(o, to, turn, a);
@@ -101,17 +131,84 @@ void ScriptedSoccerPolicy::act(std::span<const float> o, std::span<float> a) {
         v.own_goal + to_ball.normalized() * std::min(kDefend_m, 0.5 * to_ball.norm());
     return walk(o, guard, bearing(ball), a);
   }
+  if (kick_) return kick_chase(o, v, a);
   chase(o, v, a);
 }
 
-void ScriptedSoccerPolicy::chase(std::span<const float> o, const View& v, std::span<float> a) {
+void ScriptedSoccerPolicy::kick_chase(std::span<const float> o, const View& v, std::span<float> a) {
   const Eigen::Vector2d ball = v.ball.head<2>();
-  // The shot: at the goal's middle, or with a keeper there, inside the post away from it.
-  const Eigen::Vector2d attack = (v.goal - v.own_goal).normalized(), across = left_of(attack);
+  const double rolling = v.ball_velocity.head<2>().norm();
+  const control::BodyPose pose = model_->pose_from_observation(o);
+  const Eigen::Vector2d aim = shot_aim(v), dir = (aim - ball).normalized();
+  const double speed = shot_speed((aim - ball).norm());
+
+  if (kick_->active()) {
+    if ((!kick_->struck() && rolling > kKnockedAway_mps) || o[0] < kDown_m) {
+      kick_->abort();
+      legs_.reset();
+    } else {
+      if (!kick_->struck()) kick_direction_ = dir, kick_speed_ = speed;
+      kick_->act(o, pose, v.ball, kick_direction_, kick_speed_, a);
+      if (!kick_->active()) {
+        // The kicking foot is still in the air: the stepping controller takes over with it as
+        // its first swing foot (it swings the foot on its target's side).
+        legs_.reset();
+        std::fill(a.begin(), a.end(), 0.0f);
+        walk(o, Eigen::Vector2d(0.3, kick_->right_foot() ? -0.3 : 0.3), 0, a);
+      }
+      return;
+    }
+  }
+  if (rolling > kRolling_mps) {
+    // Follow it: to where it is going, behind it on the line to the aim.
+    const Eigen::Vector2d ahead = ball + v.ball_velocity.head<2>() * 0.5;
+    return walk(o, ahead - dir * 0.8, bearing(ahead), a);
+  }
+  // At the kick's start, standing or nearly (both feet down, slow, under the body): kick.
+  const Eigen::Vector2d start = ball + kick_->approach_from_ball(dir, true);
+  const double ground = -o[0];
+  const Eigen::Vector3d com = model_->centre_of_mass(pose);
+  auto under_body = [&](int ankle) {
+    const Eigen::Vector3d at = body_position(o, ankle);
+    const double ahead = (at - com).head<2>().dot(dir);
+    return at.z() < ground + 0.1 && ahead > -0.15 && ahead < 0.12;
+  };
+  const bool settled = !legs_ || !legs_->stepping() || root_velocity(o).norm() < kSettled_mps;
+  if (start.norm() < kKickFrom_m && settled && under_body(kLAnkle) && under_body(kRAnkle) &&
+      rolling < kAtRest_mps && std::abs(bearing(dir)) < kKickFacing) {
+    kick_->start(true);
+    kick_direction_ = dir, kick_speed_ = speed;
+    kick_->act(o, pose, v.ball, kick_direction_, kick_speed_, a);
+    return;
+  }
+  const Eigen::Vector2d me = -ball;  // my root, relative to the ball
+  Eigen::Vector2d target = start;
+  if (me.dot(dir) > -0.3 && std::abs(left_of(dir).dot(me)) < 0.9) {
+    // On the wrong side of the ball, or too close beside it: round it, on my side of the line.
+    const double side = left_of(dir).dot(me) >= 0 ? 1 : -1;
+    target = ball - dir * 0.9 + left_of(dir) * side * 1.0;
+  }
+  walk(o, target, bearing(target.norm() > 1.0 ? target : dir), a);
+}
+
+Eigen::Vector2d ScriptedSoccerPolicy::shot_aim(const View& v) {
+  // The goal's middle, or with a keeper there, inside the post away from it.
+  const Eigen::Vector2d across = left_of((v.goal - v.own_goal).normalized());
   Eigen::Vector2d aim = v.goal;
   for (const Eigen::Vector2d& p : v.opponents)
     if ((p - v.goal).norm() < kKeeperNear_m)
       aim = v.goal - across * kShotAim_m * ((p - v.goal).dot(across) >= 0 ? 1 : -1);
+  return aim;
+}
+
+double ScriptedSoccerPolicy::shot_speed(double distance_m) {
+  return std::min(kMaxShot_mps, std::sqrt(kArriveSpeed_mps * kArriveSpeed_mps +
+                                          2 * kRollingDecel_mps2 * distance_m));
+}
+
+void ScriptedSoccerPolicy::chase(std::span<const float> o, const View& v, std::span<float> a) {
+  const Eigen::Vector2d ball = v.ball.head<2>();
+  const Eigen::Vector2d aim = shot_aim(v);
 
   // Where I stand against the line from the ball to the aim: `along` < 0 behind the ball.
   const Eigen::Vector2d dir = (aim - ball).normalized();

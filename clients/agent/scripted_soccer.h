@@ -14,6 +14,7 @@
 // - while the other side has a restart to take, both keep back from the ball.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -22,10 +23,21 @@
 
 namespace olympics::client {
 
+namespace control {
+class BodyModel;
+}
+class SoccerKick;
+
 class ScriptedSoccerPolicy : public Policy {
  public:
   void start(const MatchInfo& match) override;
   void act(std::span<const float> observation, std::span<float> action) override;
+
+  // The speed a shot is kicked at to roll `distance_m` and still be quick at the goal line.
+  static double shot_speed(double distance_m);
+  // The direction of the last kick (heading frame) and its speed; for tests.
+  const Eigen::Vector2d& kick_direction() const { return kick_direction_; }
+  double kick_speed() const { return kick_speed_; }
 
   // What the player sees, from the observation (heading frame, from the root).
   struct View {
@@ -39,8 +51,10 @@ class ScriptedSoccerPolicy : public Policy {
 
  private:
   View see(std::span<const float> o) const;
+  static Eigen::Vector2d shot_aim(const View& v);
   void keep_goal(std::span<const float> o, const View& v, std::span<float> a);
   void chase(std::span<const float> o, const View& v, std::span<float> a);
+  void kick_chase(std::span<const float> o, const View& v, std::span<float> a);
   void walk(std::span<const float> o, const Eigen::Vector2d& to, double turn, std::span<float> a);
 
   struct Blocks {
@@ -51,7 +65,11 @@ class ScriptedSoccerPolicy : public Policy {
   bool keeper_mode_ = false;    // penalty_kick_keeper
   std::optional<bool> keeper_;  // am I the keeper (decided on the first tick)
   std::optional<StepController> legs_;
-  bool lined_up_ = false;  // behind the ball and facing the aim: pushing it on
+  std::shared_ptr<control::BodyModel> model_;  // shared: a policy may be copied
+  std::shared_ptr<SoccerKick> kick_;           // penalty modes only
+  Eigen::Vector2d kick_direction_{1, 0};       // heading frame
+  double kick_speed_ = 0;                      // m/s the ball is kicked at
+  bool lined_up_ = false;                      // behind the ball and facing the aim: pushing it on
 };
 
 }  // namespace olympics::client
