@@ -35,10 +35,12 @@ constexpr double kKickerWalkPerM = 1.5;      // ...and its StepGains::speed_per_
 constexpr double kArriveSpeed_mps = 3.0;     // a shot is kicked to be this fast at the goal line
 constexpr double kRollingDecel_mps2 = 0.85;  // a rolling ball slows by about this (c_rr 0.08)
 constexpr double kMaxShot_mps = 8.0;
-constexpr double kKeeperOut_m = 0.5;     // a keeper stands this far in front of its line
-constexpr double kPostInside_m = 1.7;    // ...and no further across than this from the middle
-constexpr double kShotComing_mps = 1.0;  // a ball closing on the goal faster than this: a shot
-constexpr double kFollowBall = 0.3;      // not a shot: the keeper follows the ball's side by this
+constexpr double kKeeperSideSpeed_mps = 1.0;  // a keeper's StepGains::max_side_speed
+constexpr double kKeeperSpeedPerM = 4.0;      // ...and its StepGains::speed_per_m
+constexpr double kKeeperOut_m = 0.5;          // a keeper stands this far in front of its line
+constexpr double kPostInside_m = 1.7;         // ...and no further across than this from the middle
+constexpr double kShotComing_mps = 1.0;       // a ball closing on the goal faster than this: a shot
+constexpr double kFollowBall = 0.3;  // not a shot: the keeper follows the ball's side by this
 
 double bearing(const Eigen::Vector2d& v) { return std::atan2(v.y(), v.x()); }
 Eigen::Vector2d left_of(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
@@ -94,7 +96,12 @@ void ScriptedSoccerPolicy::walk(std::span<const float> o, const Eigen::Vector2d&
   if (!legs_) {
     StepGains gains;
     gains.turn_start = 0.5;
-    if (kick_) {
+    if (keeper_ && *keeper_) {
+      // A keeper shuffles across its line faster than a walker sidesteps.
+      gains.max_side_speed = kKeeperSideSpeed_mps;
+      gains.max_speed = kKeeperSideSpeed_mps;
+      gains.speed_per_m = kKeeperSpeedPerM;
+    } else if (kick_) {
       // A kicker walks slower: it stops where a kick starts, not a step past it.
       gains.max_speed = kKickerWalk_mps;
       gains.speed_per_m = kKickerWalkPerM;
