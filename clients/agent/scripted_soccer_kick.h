@@ -41,7 +41,7 @@ struct KickGains {
   double backswing_out_m = 0.0;  // ...and this far out to the kicking foot's side
   double follow_m = 0.3;         // the follow-through, past the contact point
   double follow_up_m = 0.12;
-  double ball_per_foot = 1.85;  // ball speed per foot speed at contact (measured, seeds 1-60)
+  double ball_per_foot = 2.4;   // ball speed per foot speed at contact (seeds 1-60)
   double max_foot_speed = 7;    // m/s
   double com_gain = 0.6;        // pelvis moved per m of centre-of-mass error, per tick
   double com_damping_s = 0.15;  // ...less the velocity times this
