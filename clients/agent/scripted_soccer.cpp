@@ -216,7 +216,9 @@ double ScriptedSoccerPolicy::shot_speed(double distance_m) {
 
 void ScriptedSoccerPolicy::chase(std::span<const float> o, const View& v, std::span<float> a) {
   const Eigen::Vector2d ball = v.ball.head<2>();
-  const Eigen::Vector2d aim = shot_aim(v);
+  // At the goal's middle: in a match the keeper-aware aim of the penalty kick turned the
+  // dribble away from any defender near the goal (not measured yet, so not changed).
+  const Eigen::Vector2d aim = v.goal;
 
   // Where I stand against the line from the ball to the aim: `along` < 0 behind the ball.
   const Eigen::Vector2d dir = (aim - ball).normalized();
