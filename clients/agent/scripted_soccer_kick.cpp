@@ -5,6 +5,7 @@
 
 #include "control/drive_target.h"
 #include "control/smpl_legs.h"
+#include "equipment/ball.h"
 #include "smpl_observation.h"
 #include "step_controller.h"
 
@@ -13,7 +14,7 @@ namespace {
 
 using namespace smpl;
 
-constexpr double kBallRadius = 0.11;
+const double kBallRadius = sports::equipment::soccer_ball().radius;
 constexpr double kAnkleHeight = 0.07;  // ankle origin above the sole, foot flat
 constexpr double kLegLength = 0.77;    // a standing leg's hip to ankle (a slightly bent knee)
 
@@ -52,7 +53,8 @@ void SoccerKick::start(bool right_foot) {
 Eigen::Vector2d SoccerKick::approach_from_ball(const Eigen::Vector2d& direction,
                                                bool right_foot) const {
   const Eigen::Vector2d side(-direction.y(), direction.x());  // left of the kick
-  // The root half a stance behind the planted foot's spot, toward the kicking foot's side.
+  // The root behind the ball on the kick's line (a plant step short of the ball), shifted
+  // toward the planting foot's side by approach_side_m.
   return -direction * g_.approach_behind_m +
          side * (right_foot ? g_.approach_side_m : -g_.approach_side_m);
 }
