@@ -31,14 +31,18 @@ nlohmann::json play(const std::string& mode, std::uint64_t seed,
           {"goals", o.info.value("goals", nlohmann::json::array())}};
 }
 
-nlohmann::json penalty_kicks(const std::string& policy, const std::vector<std::uint64_t>& seeds) {
+// Penalty kicks by `policy`, against a goalkeeper playing `keeper` when it is given.
+nlohmann::json penalty_kicks(const std::string& policy, const std::vector<std::uint64_t>& seeds,
+                             const std::string& keeper = "") {
   int scored = 0, touched = 0;
   double seconds_to_goal = 0;
   std::map<std::string, int> calls, endings;
   const int kicks = static_cast<int>(seeds.size());
   for (const std::uint64_t seed : seeds) {
     std::vector<int> touch;
-    const auto r = play("penalty_kick", seed, {policy}, {}, calls, touch);
+    const auto r = keeper.empty()
+                       ? play("penalty_kick", seed, {policy}, {}, calls, touch)
+                       : play("penalty_kick_keeper", seed, {policy, keeper}, {}, calls, touch);
     const bool goal = r["reason"] == "goal";
     scored += goal;
     touched += touch[0];
@@ -91,6 +95,8 @@ nlohmann::json run_soccer_bench(const SoccerBenchOptions& o) {
   nlohmann::json report = {{"penalty_kick", nlohmann::json::object()},
                            {"seeds", o.seeds.empty() ? "1-" + std::to_string(o.kicks) : o.seeds}};
   for (const auto& p : o.policies) report["penalty_kick"][p] = penalty_kicks(p, seeds);
+  if (o.keeper)
+    report["penalty_kick_keeper"]["scripted"] = penalty_kicks("scripted", seeds, "scripted");
   for (const char* mode : {"1v1", "2v2"})
     report["scripted_" + std::string(mode)] = scripted_matches(mode, o.matches, o.half_s);
   if (o.speed) {
@@ -102,14 +108,18 @@ nlohmann::json run_soccer_bench(const SoccerBenchOptions& o) {
 
 void print_soccer_report(const nlohmann::json& r) {
   std::printf("penalty kick seeds %s\n", r["seeds"].get<std::string>().c_str());
-  for (const auto& [policy, k] : r["penalty_kick"].items()) {
-    std::printf(
-        "penalty kick, %-9s %d kicks: scored %.1f%% (95%% interval %.1f-%.1f%%), touched %.0f%%, "
-        "falls %d, %.1f s to a goal; endings %s\n",
-        policy.c_str(), k["kicks"].get<int>(), 100 * k["scored"].get<double>(),
-        100 * k["scored_ci95"][0].get<double>(), 100 * k["scored_ci95"][1].get<double>(),
-        100 * k["touched"].get<double>(), k["falls"].get<int>(), k["mean_s_to_goal"].get<double>(),
-        k["endings"].dump().c_str());
+  for (const char* mode : {"penalty_kick", "penalty_kick_keeper"}) {
+    if (!r.contains(mode)) continue;
+    for (const auto& [policy, k] : r[mode].items()) {
+      std::printf(
+          "%s, %-9s %d kicks: scored %.1f%% (95%% interval %.1f-%.1f%%), touched %.0f%%, "
+          "falls %d, %.1f s to a goal; endings %s\n",
+          std::string(mode) == "penalty_kick" ? "penalty kick" : "penalty kick v scripted keeper",
+          policy.c_str(), k["kicks"].get<int>(), 100 * k["scored"].get<double>(),
+          100 * k["scored_ci95"][0].get<double>(), 100 * k["scored_ci95"][1].get<double>(),
+          100 * k["touched"].get<double>(), k["falls"].get<int>(),
+          k["mean_s_to_goal"].get<double>(), k["endings"].dump().c_str());
+    }
   }
   for (const char* mode : {"1v1", "2v2"}) {
     const auto& m = r["scripted_" + std::string(mode)];

@@ -1,8 +1,9 @@
 // Soccer figures, the yardsticks learned players must beat: penalty kicks with fixed seeds
 // (1..N) for scripted, zero and random (fraction scored, fraction that touched the ball, falls,
-// how they ended); goals per 10 minutes of scripted-vs-scripted 1v1 and 2v2 matches (with
-// scorers, assists, own goals, restarts); and 2v2 ticks/s (four humanoids and the ball) against
-// the bare physics of four humanoids, measured interleaved.
+// how they ended), and the scripted kicker against the scripted goalkeeper; goals per 10 minutes of
+// scripted-vs-scripted 1v1 and 2v2 matches (with scorers, assists, own goals, restarts); and 2v2
+// ticks/s (four humanoids and the ball) against the bare physics of four humanoids, measured
+// interleaved.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -20,6 +21,7 @@ struct SoccerBenchOptions {
   double seconds = 2;  // wall seconds per speed measurement
   int repeats = 3;
   bool speed = true;
+  bool keeper = true;  // scripted kicks against the scripted goalkeeper (penalty_kick_keeper)
 };
 
 nlohmann::json run_soccer_bench(const SoccerBenchOptions& options);

@@ -1,5 +1,5 @@
 // olympics-bench soccer [--json] [--kicks N | --seeds A-B,..] [--matches M] [--half-s S]
-//                       [--policies P,..]
+//                       [--policies P,..] [--no-speed] [--no-keeper]
 #include "bench_command.h"
 #include "soccer_bench.h"
 
@@ -19,6 +19,8 @@ BenchCommand soccer_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   cli.add_option("--policies", o->policies, "penalty kickers (comma-separated)")->delimiter(',');
   cli.add_flag("--no-speed{false}", o->speed, "skip the 2v2 ticks/s measurement");
+  cli.add_flag("--no-keeper{false}", o->keeper,
+               "skip the scripted kicker against the scripted goalkeeper");
   cli.add_option("--seconds", o->seconds, "wall seconds per speed measurement")
       ->check(CLI::PositiveNumber);
   cli.add_option("--repeats", o->repeats, "interleaved repeats (median reported)")

@@ -4,24 +4,49 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "control/body_model.h"
+#include "scripted_soccer_kick.h"
 #include "smpl_observation.h"
 
 namespace olympics::client {
 namespace {
 
+Eigen::Vector2d xy(std::span<const float> o, int at) { return {o[at], o[at + 1]}; }
+
 using namespace smpl;
 
 constexpr double kBehind_m = 0.7;      // the approach point, behind the ball
-constexpr double kLinedUp_m = 0.35;    // off the ball-to-goal line by less than this: lined up
+constexpr double kLinedUp_m = 0.35;    // off the ball-to-aim line by less than this: lined up
 constexpr double kLoseLine_m = 0.6;    // ...and it stops pushing when further off than this
 constexpr double kThrough_m = 0.6;     // while pushing, it walks to this far past the ball
 constexpr double kKeepBack_m = 3.8;    // from the ball while the other side restarts
 constexpr double kDefend_m = 5.0;      // the second player, this far out from its own goal
 constexpr double kDownBelow_m = -0.4;  // a teammate's root this far below mine: it is down
-
-Eigen::Vector2d xy(std::span<const float> o, int at) { return {o[at], o[at + 1]}; }
+constexpr double kKeeperNear_m = 3.0;  // an opponent this near the goal I attack keeps it
+constexpr double kShotAim_m = 1.3;     // ...and I aim this far off the goal's middle, away
+// The kick (penalty modes).
+constexpr double kKickFrom_m = 0.12;      // this close to where a kick starts: kick
+constexpr double kSettled_mps = 0.45;     // ...walking no faster than this
+constexpr double kAtRest_mps = 0.15;      // ...a ball this slow
+constexpr double kKickFacing = 0.4;       // ...facing the kick's line within this, rad
+constexpr double kRolling_mps = 0.5;      // a ball faster than this is followed, not kicked
+constexpr double kKnockedAway_mps = 2.5;  // a kick gives up on a ball knocked this fast
+constexpr double kDown_m = 0.6;           // ...and on a body whose root is this low
+constexpr double kKickerWalk_mps = 0.8;   // a kicker's walking speed (StepGains::max_speed)
+constexpr double kKickerWalkPerM = 1.5;   // ...and its StepGains::speed_per_m
+constexpr double kArriveSpeed_mps = 3.0;  // a shot is kicked to be this fast at the goal line
+constexpr double kRollingDecel_mps2 =
+    2.0;  // a kicked ball slows by about this (slides, then rolls)
+constexpr double kMaxShot_mps = 8.0;
+constexpr double kKeeperSideSpeed_mps = 1.0;  // a keeper's StepGains::max_side_speed
+constexpr double kKeeperSpeedPerM = 4.0;      // ...and its StepGains::speed_per_m
+constexpr double kKeeperOut_m = 0.5;          // a keeper stands this far in front of its line
+constexpr double kPostInside_m = 1.7;         // ...and no further across than this from the middle
+constexpr double kShotComing_mps = 1.0;       // a ball closing on the goal faster than this: a shot
+constexpr double kFollowBall = 0.3;  // not a shot: the keeper follows the ball's side by this
 
 double bearing(const Eigen::Vector2d& v) { return std::atan2(v.y(), v.x()); }
+Eigen::Vector2d left_of(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
 
 }  // namespace
 
@@ -29,43 +54,178 @@ void ScriptedSoccerPolicy::start(const MatchInfo& match) {
   if (match.sport != "soccer")
     throw std::invalid_argument("the scripted soccer policy plays soccer, not " + match.sport);
   const ObservationLayout& l = match.observation;
-  blocks_ = {l.offset("ball", "position"), l.offset("goals", "attack"), l.offset("goals", "defend"),
+  blocks_ = {l.offset("ball", "position"),
+             l.offset("ball", "velocity"),
+             l.offset("goals", "attack"),
+             l.offset("goals", "defend"),
              l.has("teammates") ? l.offset("teammates", "position_0") : -1,
-             l.offset("match", "restart")};
-  StepGains gains;
-  gains.turn_start = 0.5;
-  legs_.emplace(gains, match.control_dt);
+             l.offset("match", "restart"),
+             {}};
+  for (int k = 0; l.has("opponents", "position_" + std::to_string(k)); ++k)
+    blocks_.opponents.push_back(l.offset("opponents", "position_" + std::to_string(k)));
+  control_dt_ = match.control_dt;
+  keeper_mode_ = match.mode == "penalty_kick_keeper";
+  keeper_.reset();
+  legs_.reset();
   lined_up_ = false;
+  // Penalty kicks are kicked; in matches the chaser dribbles (a kick falls too often yet, and
+  // an opponent reaches a ball at rest before a kick is wound up).
+  if (match.mode.rfind("penalty_kick", 0) == 0) {
+    if (!model_)
+      model_ = std::make_shared<control::BodyModel>(
+          control::BodyModel::humanoid(core::HumanoidKind::Smpl));
+    kick_ = std::make_shared<SoccerKick>(*model_, control_dt_);
+  } else {
+    kick_.reset();
+  }
+}
+
+ScriptedSoccerPolicy::View ScriptedSoccerPolicy::see(std::span<const float> o) const {
+  const Blocks& at = blocks_;
+  View v;
+  v.ball = vec3(o, at.ball);
+  v.ball_velocity = vec3(o, at.ball_velocity);
+  v.goal = xy(o, at.goal);
+  v.own_goal = xy(o, at.own_goal);
+  if (at.mate >= 0) {
+    v.teammate = xy(o, at.mate);
+    v.mate_down = vec3(o, at.mate).z() < kDownBelow_m;
+  }
+  for (int at_opponent : at.opponents) v.opponents.push_back(xy(o, at_opponent));
+  v.theirs_to_take = o[at.restart] < -0.5;
+  return v;
+}
+
+void ScriptedSoccerPolicy::walk(std::span<const float> o, const Eigen::Vector2d& to, double turn,
+                                std::span<float> a) {
+  if (!legs_) {
+    StepGains gains;
+    gains.turn_start = 0.5;
+    if (keeper_ && *keeper_) {
+      // A keeper shuffles across its line faster than a walker sidesteps.
+      gains.max_side_speed = kKeeperSideSpeed_mps;
+      gains.max_speed = kKeeperSideSpeed_mps;
+      gains.speed_per_m = kKeeperSpeedPerM;
+    } else if (kick_) {
+      // A kicker walks slower: it stops where a kick starts, not a step past it.
+      gains.max_speed = kKickerWalk_mps;
+      gains.speed_per_m = kKickerWalkPerM;
+    }
+    legs_.emplace(gains, control_dt_);
+  }
+  legs_->act(o, to, turn, a);
 }
 
 void ScriptedSoccerPolicy::act(std::span<const float> o, std::span<float> a) {
-  if (!legs_) throw std::logic_error("ScriptedSoccerPolicy: act() before start()");
+  if (control_dt_ <= 0) throw std::logic_error("ScriptedSoccerPolicy: act() before start()");
   if (a.size() != kActions)
     throw std::invalid_argument("the scripted soccer policy drives the SMPL humanoid (69 actions)");
   std::fill(a.begin(), a.end(), 0.0f);
-  const Blocks& at = blocks_;
-  const Eigen::Vector2d ball = xy(o, at.ball), goal = xy(o, at.goal), own_goal = xy(o, at.own_goal);
-  const bool theirs_to_take = o[at.restart] < -0.5;
+  const View v = see(o);
+  // The keeper is the one whose own goal is near at the start.
+  if (!keeper_) keeper_ = keeper_mode_ && v.own_goal.norm() < 3.0;
 
-  if (theirs_to_take) {
+  if (*keeper_) return keep_goal(o, v, a);
+  if (v.theirs_to_take) {
     lined_up_ = false;
-    const Eigen::Vector2d back = ball + (own_goal - ball).normalized() * kKeepBack_m;
-    return legs_->act(o, back, bearing(ball), a);
+    const Eigen::Vector2d ball = v.ball.head<2>();
+    const Eigen::Vector2d back = ball + (v.own_goal - ball).normalized() * kKeepBack_m;
+    return walk(o, back, bearing(ball), a);
   }
   // One chaser per side: whoever is nearer the ball (each of the two sees the same distances),
-  // unless the teammate is down (its root far below mine).
-  const bool mate_down = at.mate >= 0 && vec3(o, at.mate).z() < kDownBelow_m;
-  const bool chaser = at.mate < 0 || mate_down || ball.norm() < (ball - xy(o, at.mate)).norm();
+  // unless the teammate is down.
+  const Eigen::Vector2d ball = v.ball.head<2>();
+  const bool chaser = !v.teammate || v.mate_down || ball.norm() < (ball - *v.teammate).norm();
   if (!chaser) {
     lined_up_ = false;
-    const Eigen::Vector2d to_ball = ball - own_goal;
+    const Eigen::Vector2d to_ball = ball - v.own_goal;
     const Eigen::Vector2d guard =
-        own_goal + to_ball.normalized() * std::min(kDefend_m, 0.5 * to_ball.norm());
-    return legs_->act(o, guard, bearing(ball), a);
+        v.own_goal + to_ball.normalized() * std::min(kDefend_m, 0.5 * to_ball.norm());
+    return walk(o, guard, bearing(ball), a);
   }
+  if (kick_) return kick_chase(o, v, a);
+  chase(o, v, a);
+}
 
-  // Where I stand against the line from the ball to the goal: `along` < 0 behind the ball.
-  const Eigen::Vector2d dir = (goal - ball).normalized();
+void ScriptedSoccerPolicy::kick_chase(std::span<const float> o, const View& v, std::span<float> a) {
+  const Eigen::Vector2d ball = v.ball.head<2>();
+  const double rolling = v.ball_velocity.head<2>().norm();
+  const control::BodyPose pose = model_->pose_from_observation(o);
+  const Eigen::Vector2d aim = shot_aim(v), dir = (aim - ball).normalized();
+  const double speed = shot_speed((aim - ball).norm());
+
+  if (kick_->active()) {
+    if ((!kick_->struck() && rolling > kKnockedAway_mps) || root_height(o) < kDown_m) {
+      kick_->abort();
+      legs_.reset();
+    } else {
+      if (!kick_->struck()) kick_direction_ = dir, kick_speed_ = speed;
+      kick_->act(o, pose, v.ball, kick_direction_, kick_speed_, a);
+      if (!kick_->active()) {
+        // The kicking foot is still in the air: the stepping controller takes over with it as
+        // its first swing foot (it swings the foot on its target's side).
+        legs_.reset();
+        std::fill(a.begin(), a.end(), 0.0f);
+        walk(o, Eigen::Vector2d(0.3, kick_->right_foot() ? -0.3 : 0.3), 0, a);
+      }
+      return;
+    }
+  }
+  if (rolling > kRolling_mps) {
+    // Follow it: to where it is going, behind it on the line to the aim.
+    const Eigen::Vector2d ahead = ball + v.ball_velocity.head<2>() * 0.5;
+    return walk(o, ahead - dir * 0.8, bearing(ahead), a);
+  }
+  // At the kick's start, standing or nearly (both feet down, slow, under the body): kick.
+  const Eigen::Vector2d start = ball + kick_->approach_from_ball(dir, true);
+  const double ground = -root_height(o);
+  const Eigen::Vector3d com = model_->centre_of_mass(pose);
+  auto under_body = [&](int ankle) {
+    const Eigen::Vector3d at = body_position(o, ankle);
+    const double ahead = (at - com).head<2>().dot(dir);
+    return at.z() < ground + 0.1 && ahead > -0.15 && ahead < 0.12;
+  };
+  const bool settled = !legs_ || !legs_->stepping() || root_velocity(o).norm() < kSettled_mps;
+  if (start.norm() < kKickFrom_m && settled && under_body(kLAnkle) && under_body(kRAnkle) &&
+      rolling < kAtRest_mps && std::abs(bearing(dir)) < kKickFacing) {
+    kick_->start(true);
+    kick_direction_ = dir, kick_speed_ = speed;
+    kick_->act(o, pose, v.ball, kick_direction_, kick_speed_, a);
+    return;
+  }
+  const Eigen::Vector2d me = -ball;  // my root, relative to the ball
+  Eigen::Vector2d target = start;
+  if (me.dot(dir) > -0.3 && std::abs(left_of(dir).dot(me)) < 0.9) {
+    // On the wrong side of the ball, or too close beside it: round it, on my side of the line.
+    const double side = left_of(dir).dot(me) >= 0 ? 1 : -1;
+    target = ball - dir * 0.9 + left_of(dir) * side * 1.0;
+  }
+  walk(o, target, bearing(target.norm() > 1.0 ? target : dir), a);
+}
+
+Eigen::Vector2d ScriptedSoccerPolicy::shot_aim(const View& v) {
+  // The goal's middle, or with a keeper there, inside the post away from it.
+  const Eigen::Vector2d across = left_of((v.goal - v.own_goal).normalized());
+  Eigen::Vector2d aim = v.goal;
+  for (const Eigen::Vector2d& p : v.opponents)
+    if ((p - v.goal).norm() < kKeeperNear_m)
+      aim = v.goal - across * kShotAim_m * ((p - v.goal).dot(across) >= 0 ? 1 : -1);
+  return aim;
+}
+
+double ScriptedSoccerPolicy::shot_speed(double distance_m) {
+  return std::min(kMaxShot_mps, std::sqrt(kArriveSpeed_mps * kArriveSpeed_mps +
+                                          2 * kRollingDecel_mps2 * distance_m));
+}
+
+void ScriptedSoccerPolicy::chase(std::span<const float> o, const View& v, std::span<float> a) {
+  const Eigen::Vector2d ball = v.ball.head<2>();
+  // At the goal's middle: in a match the keeper-aware aim of the penalty kick turned the
+  // dribble away from any defender near the goal (not measured yet, so not changed).
+  const Eigen::Vector2d aim = v.goal;
+
+  // Where I stand against the line from the ball to the aim: `along` < 0 behind the ball.
+  const Eigen::Vector2d dir = (aim - ball).normalized();
   const Eigen::Vector2d me = -ball;  // my root, relative to the ball
   const double along = me.dot(dir);
   const double off_line = std::abs(dir.x() * me.y() - dir.y() * me.x());
@@ -73,7 +233,7 @@ void ScriptedSoccerPolicy::act(std::span<const float> o, std::span<float> a) {
     lined_up_ = along < 0.1 && off_line < kLoseLine_m;
   else
     lined_up_ = along < -0.2 && along > -kBehind_m - 0.4 && off_line < kLinedUp_m;
-  if (lined_up_) return legs_->act(o, ball + dir * kThrough_m, bearing(dir), a);
+  if (lined_up_) return walk(o, ball + dir * kThrough_m, bearing(dir), a);
 
   Eigen::Vector2d target = ball - dir * kBehind_m;
   if (along > -0.3 && off_line < 0.9) {
@@ -82,7 +242,21 @@ void ScriptedSoccerPolicy::act(std::span<const float> o, std::span<float> a) {
     const double side = perp.dot(me) >= 0 ? 1 : -1;
     target = ball - dir * (kBehind_m + 0.3) + perp * side * 1.0;
   }
-  legs_->act(o, target, bearing(target.norm() > 1.0 ? target : dir), a);
+  walk(o, target, bearing(target.norm() > 1.0 ? target : dir), a);
+}
+
+void ScriptedSoccerPolicy::keep_goal(std::span<const float> o, const View& v, std::span<float> a) {
+  const Eigen::Vector2d ball = v.ball.head<2>(), vel = v.ball_velocity.head<2>();
+  const Eigen::Vector2d out = (v.goal - v.own_goal).normalized(), across = left_of(out);
+  // Across the line: where a shot coming at the goal will cross it, else toward the ball's side.
+  // It faces the ball, arms out at its sides (the zero pose): a wide body across the shot.
+  const double ball_out = (ball - v.own_goal).dot(out), closing = -vel.dot(out);
+  double y = (ball - v.own_goal).dot(across) * kFollowBall;
+  if (closing > kShotComing_mps && ball_out > 0)
+    y = (ball - v.own_goal).dot(across) + vel.dot(across) * ball_out / closing;
+  y = std::clamp(y, -kPostInside_m, kPostInside_m);
+  const Eigen::Vector2d spot = v.own_goal + out * kKeeperOut_m + across * y;
+  walk(o, spot, bearing(ball), a);
 }
 
 std::unique_ptr<Policy> make_scripted_soccer() { return std::make_unique<ScriptedSoccerPolicy>(); }

@@ -1,34 +1,76 @@
 // The scripted baseline for soccer: the yardstick learned players must beat. It reads only the
-// observation (blocks by name):
+// observation (blocks by name, in one place: ScriptedSoccerPolicy::see):
 //
 // - the chaser (in 1v1 and the penalty kick always; in 2v2 whichever of the two is nearer the
-//   ball) walks (StepController) to a point behind the ball on the line from the goal it attacks
-//   through the ball, going round the ball when it stands on the wrong side;
-// - lined up behind the ball, it walks through it towards the goal: its swinging feet knock the
-//   ball on, a dribble that ends in a shot when the feet meet the ball at speed;
+//   ball) walks (StepController) to a point behind the ball on the line from its aim through the
+//   ball, going round the ball when it stands on the wrong side; lined up, it walks through the
+//   ball: its swinging feet knock it on, a dribble that ends in a shot when the feet meet the
+//   ball at speed. It aims at the goal's middle, or with a keeper in the goal, inside the post
+//   away from the keeper;
+// - the goalkeeper (penalty_kick_keeper, the side defending the near goal) stands on its line
+//   between the ball and the goal's middle, moves across to where a shot will cross the line
+//   and spreads its arms to block;
 // - in 2v2 the other player stays between the ball and its own goal;
 // - while the other side has a restart to take, both keep back from the ball.
 #pragma once
 
+#include <memory>
 #include <optional>
+#include <vector>
 
 #include "policies.h"
 #include "step_controller.h"
 
 namespace olympics::client {
 
+namespace control {
+class BodyModel;
+}
+class SoccerKick;
+
 class ScriptedSoccerPolicy : public Policy {
  public:
   void start(const MatchInfo& match) override;
   void act(std::span<const float> observation, std::span<float> action) override;
 
+  // The speed a shot is kicked at to roll `distance_m` and still be quick at the goal line.
+  static double shot_speed(double distance_m);
+  // The direction of the last kick (heading frame) and its speed; for tests.
+  const Eigen::Vector2d& kick_direction() const { return kick_direction_; }
+  double kick_speed() const { return kick_speed_; }
+
+  // What the player sees, from the observation (heading frame, from the root).
+  struct View {
+    Eigen::Vector3d ball, ball_velocity;
+    Eigen::Vector2d goal, own_goal;  // centres of the goal I attack and the one I defend
+    std::optional<Eigen::Vector2d> teammate;
+    std::vector<Eigen::Vector2d> opponents;
+    bool theirs_to_take = false;  // the other side has a restart to take
+    bool mate_down = false;
+  };
+
  private:
+  View see(std::span<const float> o) const;
+  static Eigen::Vector2d shot_aim(const View& v);
+  void keep_goal(std::span<const float> o, const View& v, std::span<float> a);
+  void chase(std::span<const float> o, const View& v, std::span<float> a);
+  void kick_chase(std::span<const float> o, const View& v, std::span<float> a);
+  void walk(std::span<const float> o, const Eigen::Vector2d& to, double turn, std::span<float> a);
+
   struct Blocks {  // where the fields it reads start (teammate: the first's position; -1: none)
-    int ball = 0, goal = 0, own_goal = 0, mate = -1, restart = 0;
+    int ball = 0, ball_velocity = 0, goal = 0, own_goal = 0, mate = -1, restart = 0;
+    std::vector<int> opponents;  // each opponent's position
   };
   Blocks blocks_;
+  double control_dt_ = 0;
+  bool keeper_mode_ = false;    // penalty_kick_keeper
+  std::optional<bool> keeper_;  // am I the keeper (decided on the first tick)
   std::optional<StepController> legs_;
-  bool lined_up_ = false;  // behind the ball and facing the goal: pushing it on
+  std::shared_ptr<control::BodyModel> model_;  // shared: a policy may be copied
+  std::shared_ptr<SoccerKick> kick_;           // penalty modes only
+  Eigen::Vector2d kick_direction_{1, 0};       // heading frame
+  double kick_speed_ = 0;                      // m/s the ball is kicked at
+  bool lined_up_ = false;                      // behind the ball and facing the aim: pushing it on
 };
 
 }  // namespace olympics::client

@@ -49,6 +49,14 @@ void flat_foot(std::span<const float> o, std::span<float> a, int knee) {
 
 }  // namespace
 
+void write_leg_toward(std::span<float> a, int hip, const Eigen::Vector3d& hip_to_ankle) {
+  write_leg(a, hip, solve_leg(hip_to_ankle));
+}
+
+void write_flat_foot(std::span<const float> o, std::span<float> a, int knee) {
+  flat_foot(o, a, knee);
+}
+
 void StepController::stand(std::span<const float> o, std::span<float> a) const {
   const BalanceGains& g = gains_.balance;
   const Eigen::Vector3d mid = 0.5 * (body_position(o, kLAnkle) + body_position(o, kRAnkle));

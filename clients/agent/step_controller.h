@@ -50,6 +50,13 @@ struct StepGains {
   double recover_m = 0.12, recover_speed = 0.35;
 };
 
+// The leg pieces the controller is built from, for other leg motions (a kick's standing leg):
+// hip and knee angles that put the ankle at `hip_to_ankle` (in the hip's parent frame; the
+// heading frame for a leg that should right the pelvis over its foot), and ankle targets that
+// turn the foot flat from the shank as it is now.
+void write_leg_toward(std::span<float> action, int hip, const Eigen::Vector3d& hip_to_ankle);
+void write_flat_foot(std::span<const float> observation, std::span<float> action, int knee);
+
 class StepController {
  public:
   // `control_dt`: seconds per tick, the match's (MatchInfo::control_dt).
