@@ -17,11 +17,17 @@ const core::ModelSpec& athlete_model() {
 }  // namespace
 
 std::vector<LayoutBlock> high_jump_task_layout() {
-  return {{"bar", 6, "m", "the crossbar's two ends relative to the root, heading frame"},
-          {"goal", 3, "m", "the seed's goal (2 m past the bar, 1 m up) relative to the root"},
-          {"attempt", 4, "m, count, fraction, m",
-           "the height to clear, tries left at it, share of the attempt's time left, my best "
-           "height so far (0: none)"}};
+  return {LayoutBlock::of("bar", "m",
+                          "the crossbar's two ends (the arena's -y end, then its +y end) relative "
+                          "to the root, heading frame",
+                          {{"end_minus_y", 3}, {"end_plus_y", 3}}),
+          LayoutBlock::of("goal", "m",
+                          "the seed's goal (2 m past the bar, 1 m up) relative to the root",
+                          {{"position", 3}}),
+          LayoutBlock::of("attempt", "m, count, fraction, m",
+                          "the height to clear, tries left at it, share of the attempt's time "
+                          "left, my best height so far (0: none)",
+                          {{"height", 1}, {"tries_left", 1}, {"time_left", 1}, {"best", 1}})};
 }
 
 std::vector<RefereeCall> high_jump_calls() {
@@ -149,13 +155,21 @@ void HighJumpMatch::on_time_limit() {
 void HighJumpMatch::write_task_observation(int slot, const HeadingFrame& frame,
                                            ObservationWriter& out) const {
   const Athlete& a = athletes_[slot];
-  out.begin("bar").put(frame.point(a.bar->end(-1))).put(frame.point(a.bar->end(1)));
-  out.begin("goal").put(frame.point(goal(slot)));
+  out.begin("bar")
+      .field("end_minus_y")
+      .put(frame.point(a.bar->end(-1)))
+      .field("end_plus_y")
+      .put(frame.point(a.bar->end(1)));
+  out.begin("goal").field("position").put(frame.point(goal(slot)));
   const double t = time() - a.attempt_start;
   out.begin("attempt")
+      .field("height")
       .put(a.series.bar_height())
+      .field("tries_left")
       .put(static_cast<double>(a.series.tries_left_at_height()))
+      .field("time_left")
       .put(std::clamp(1.0 - t / rules_.attempt_s, 0.0, 1.0))
+      .field("best")
       .put(a.series.best());
 }
 

@@ -20,12 +20,18 @@ constexpr double kSandProud = 0.02;  // m: the raked sand stands a touch above t
 }  // namespace
 
 std::vector<LayoutBlock> long_jump_task_layout() {
-  return {{"take_off_line", 3, "m",
-           "the foul line's point on my runway's centre line, relative to the root, heading frame"},
-          {"goal", 3, "m", "the seed's goal (x = 30, 1 m up) relative to the root, heading frame"},
-          {"attempt", 4, "flag, fraction, count, m",
-           "a foot is past the line (1/0), share of the attempt's time left, attempts left, my "
-           "best mark so far (0: none)"}};
+  return {LayoutBlock::of(
+              "take_off_line", "m",
+              "the foul line's point on my runway's centre line, relative to the root, heading "
+              "frame",
+              {{"point", 3}}),
+          LayoutBlock::of("goal", "m",
+                          "the seed's goal (x = 30, 1 m up) relative to the root, heading frame",
+                          {{"position", 3}}),
+          LayoutBlock::of("attempt", "flag, fraction, count, m",
+                          "a foot is past the line (1/0), share of the attempt's time left, "
+                          "attempts left, my best mark so far (0: none)",
+                          {{"past_line", 1}, {"time_left", 1}, {"attempts_left", 1}, {"best", 1}})};
 }
 
 std::vector<RefereeCall> long_jump_calls() {
@@ -157,13 +163,17 @@ void LongJumpMatch::on_time_limit() {
 void LongJumpMatch::write_task_observation(int slot, const HeadingFrame& frame,
                                            ObservationWriter& out) const {
   const Athlete& a = athletes_[slot];
-  out.begin("take_off_line").put(frame.point({rules_.line_x, lane_y(slot), 0.0}));
-  out.begin("goal").put(frame.point(goal(slot)));
+  out.begin("take_off_line").field("point").put(frame.point({rules_.line_x, lane_y(slot), 0.0}));
+  out.begin("goal").field("position").put(frame.point(goal(slot)));
   const double t = time() - a.attempt_start;
   out.begin("attempt")
+      .field("past_line")
       .put(a.referee.past_line() ? 1.0 : 0.0)
+      .field("time_left")
       .put(std::clamp(1.0 - t / rules_.attempt_s, 0.0, 1.0))
+      .field("attempts_left")
       .put(static_cast<double>(a.series.attempts() - a.series.taken()))
+      .field("best")
       .put(a.series.best());
 }
 
