@@ -13,8 +13,9 @@ from smpl_olympics.vector_env import OlympicsVectorEnv
 
 def main(envs, steps, secret_file):
     # Tennis: a match lasts its time limit whatever the players do, so every step is a step.
+    # LCM's default URL: the cell's server, or the relay carrying its traffic to this host.
     env = OlympicsVectorEnv(envs, sport="tennis", mode="1v1", seed=1, time_limit_s=600,
-                            secret_file=secret_file)
+                            secret_file=secret_file, lcm_url="udpm://239.255.76.67:7667?ttl=0")
     env.reset()
     actions = np.zeros(env.action_space.shape, np.float32)
     env.step(actions)  # the first step waits for every match to start

@@ -48,7 +48,7 @@ std::string secret_fingerprint(const std::string& secret_file) {
   std::vector<std::uint8_t> bytes(text.begin(), text.end());
   bytes.resize(bytes.size() + protocol::kSignatureBytes);
   auth->sign("OLY_FLEET_QUEUE", bytes.data(), static_cast<int>(bytes.size()));
-  return hex(bytes.data() + bytes.size() - protocol::kSignatureBytes, 8);
+  return hex(bytes.data() + bytes.size() - protocol::kMacBytes, 8);  // the MAC, not the freshness
 }
 
 std::string with_fleet_timeouts(const std::string& url) {

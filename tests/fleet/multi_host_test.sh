@@ -170,7 +170,8 @@ import numpy as np
 from smpl_olympics.vector_env import OlympicsVectorEnv
 out, secret = sys.argv[1], sys.argv[2]
 env = OlympicsVectorEnv(1, sport="tennis", mode="1v1", seed=7, time_limit_s=600,
-                        secret_file=secret, server_id="cell1")
+                        secret_file=secret, server_id="cell1",
+                        lcm_url="udpm://239.255.76.67:7667?ttl=0")  # the relay's side
 env.reset()
 actions = np.zeros(env.action_space.shape, np.float32)
 steps = 0

@@ -80,10 +80,8 @@ class Match:
         self.options = json.loads(options) if options else None
 
     def native(self, name, seed):
-        blocks = self.spec["observation"]
-        return NativePolicy(name, self.sport, self.mode, [b["name"] for b in blocks],
-                            [b["size"] for b in blocks], self.spec["action_size"],
-                            float(self.spec["control_hz"]), seed)
+        return NativePolicy(name, self.sport, self.mode, self.spec["observation"],
+                            self.spec["action_size"], float(self.spec["control_hz"]), seed)
 
 
 def play(match, player, seeds, num_envs, lcm_url):
