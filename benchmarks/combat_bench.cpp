@@ -98,8 +98,7 @@ nlohmann::json per_minute(const std::vector<double>& counts, const std::vector<d
   for (size_t k = 0; k < counts.size(); ++k) c += counts[k], m += minutes[k];
   const double rate = m > 0 ? c / m : 0;
   double var = 0;
-  for (size_t k = 0; k < counts.size(); ++k)
-    var += std::pow(counts[k] - rate * minutes[k], 2);
+  for (size_t k = 0; k < counts.size(); ++k) var += std::pow(counts[k] - rate * minutes[k], 2);
   const double half = n > 1 && m > 0 ? 1.96 * std::sqrt(var / (n - 1) / n) / (m / n) : 0;
   return {{"per_min", rate}, {"ci95", {std::max(0.0, rate - half), rate + half}}};
 }
@@ -118,8 +117,10 @@ nlohmann::json to_json(const BoutStats& st, const std::string& sport) {
   std::map<std::string, int> endings;
   std::vector<double> scored, falls, minutes;
   for (const Bout& b : st.bouts) {
-    if (b.winner >= 0) ++wins[b.winner];
-    else ++draws;
+    if (b.winner >= 0)
+      ++wins[b.winner];
+    else
+      ++draws;
     halts += b.halts;
     knockouts += b.knockouts;
     ++endings[b.ending];
@@ -175,8 +176,8 @@ nlohmann::json run_combat_bench(const CombatBenchOptions& o) {
     for (const std::string& p : o.pairings) {
       const size_t vs = p.find("_vs_");
       if (vs == std::string::npos || vs == 0 || vs + 4 >= p.size())
-        throw std::invalid_argument("--pairings: '" + p +
-                                    "' is not A_vs_B (e.g. scripted_vs_scripted, scripted_vs_zero)");
+        throw std::invalid_argument(
+            "--pairings: '" + p + "' is not A_vs_B (e.g. scripted_vs_scripted, scripted_vs_zero)");
       pairings.push_back({p.substr(0, vs), p.substr(vs + 4)});
     }
   }
