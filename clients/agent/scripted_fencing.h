@@ -1,21 +1,17 @@
 // The scripted baseline for fencing: the yardstick learned fencers must beat. It reads only the
-// observation (blocks by name, all in read_view), and is built on the control toolkit
-// (docs/control.md):
+// observation (blocks by name):
 //
-// - on guard it faces the opponent with the épée in line, the tip held on the line from the
-//   shoulder to the opponent's chest by the arm's IK with gravity compensation, the trunk held
-//   up, and its centre of mass balanced over its feet;
-// - footwork keeps it just out of the opponent's reach (stepping back when the other comes in,
-//   never further back than its end of the piste allows);
-// - it attacks: the arm extends first, the tip driven to the chest and a little beyond, then the
-//   legs step in until the tip lands (its touch count goes up) or the attack has gone on too
-//   long;
-// - it recovers: the arm back on guard, a step back out of reach, and on guard again.
+// - it faces the opponent and walks (StepController) to just out of reach, on the line between
+//   the two roots;
+// - it holds the épée pointed at the opponent's chest from the shoulder, arm straight;
+// - it attacks: steps in until the tip has driven into the target, then falls back out of reach
+//   and attacks again, over and over;
+// - near its end of the piste it does not retreat further.
 #pragma once
 
-#include <memory>
 #include <optional>
 
+#include "arm_control.h"
 #include "policies.h"
 #include "step_controller.h"
 
@@ -23,30 +19,21 @@ namespace olympics::client {
 
 class ScriptedFencingPolicy : public Policy {
  public:
-  ScriptedFencingPolicy();
-  ~ScriptedFencingPolicy() override;
   void start(const MatchInfo& match) override;
   void act(std::span<const float> observation, std::span<float> action) override;
 
  private:
   struct Blocks {
-    int opponent_root = 0, opponent_targets = 0, piste = 0, bout = 0;
+    int opponent_root = 0, opponent_targets = 0, tip = 0, piste = 0;
   };
-  struct View;  // what the policy reads of one observation
-  struct Arm;   // the body model and the épée arm's IK
-  enum class Phase { Guard, Attack, Recover };
-
-  View read_view(std::span<const float> o) const;
+  enum class Phase { Approach, Attack, Recover };
 
   Blocks blocks_;
   double control_dt_ = 0;
-  std::unique_ptr<Arm> arm_;
   std::optional<StepController> legs_;
-  Phase phase_ = Phase::Guard;
+  ArmDirection arm_{Arm::Right};
+  Phase phase_ = Phase::Approach;
   double phase_s_ = 0;
-  double touches_ = 0;  // my touches as last seen: an increase means the attack landed
-  bool have_tip_goal_ = false;
-  Eigen::Vector3d tip_goal_{0, 0, 0};
 };
 
 }  // namespace olympics::client
