@@ -18,7 +18,15 @@ BenchCommand combat_command(CLI::App& app) {
   cli.add_option("--sports", o->sports, "fencing, boxing (comma-separated)")->delimiter(',');
   cli.add_option("--pairings", o->pairings,
                  "only these pairings, A_vs_B (e.g. scripted_vs_scripted; comma-separated)")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->check(
+          [](const std::string& p) -> std::string {
+            const size_t vs = p.find("_vs_");
+            if (vs == std::string::npos || vs == 0 || vs + 4 >= p.size())
+              return "'" + p + "' is not A_vs_B (e.g. scripted_vs_scripted, scripted_vs_zero)";
+            return "";
+          },
+          "A_vs_B");
   cli.add_option("--threads", o->threads, "bouts played at once (figures do not depend on it)")
       ->check(CLI::PositiveNumber);
   cli.add_flag("--no-speed{false}", o->speed, "skip the 1v1 ticks/s measurement");
