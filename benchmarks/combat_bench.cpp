@@ -1,7 +1,12 @@
 #include "combat_bench.h"
 
 #include <array>
+#include <atomic>
+#include <cmath>
 #include <cstdio>
+#include <map>
+#include <stdexcept>
+#include <thread>
 
 #include "bench_support.h"
 #include "boxing/boxing_match.h"
@@ -12,75 +17,146 @@
 namespace olympics::bench {
 namespace {
 
-// What the bouts of one pairing added up to; per-side counts are [slot 0, slot 1].
-struct BoutStats {
-  int bouts = 0;
-  double minutes = 0;             // of bout time, all bouts together
+// One bout as it ended; per-side counts are [slot 0, slot 1].
+struct Bout {
+  double minutes = 0;
   std::array<int, 2> scored{};    // touches by the tip (fencing) / scoring punches (boxing)
   std::array<int, 2> hits{};      // fencing: hits on target above the threshold
   std::array<int, 2> by_falls{};  // fencing: touches given by the other's fall
-  std::array<int, 2> knockdowns{}, falls{}, wins{};
-  int draws = 0, halts = 0, knockouts = 0;
+  std::array<int, 2> knockdowns{}, falls{};
+  int halts = 0, knockouts = 0;
+  int winner = -1;     // -1: a draw
+  std::string ending;  // the match's reason: bout_won, time_limit, knockout, decision, ...
 };
 
-BoutStats play_bouts(const std::string& sport, const std::string& p0, const std::string& p1,
-                     const std::vector<std::uint64_t>& seeds) {
-  const auto& s = sports::sport_or_throw(sport);
-  BoutStats st;
-  for (const std::uint64_t b : seeds) {
-    auto match = s.create({"1v1", b, 0.0, {}});
-    std::array<std::unique_ptr<client::Policy>, 2> policies = {client::make_policy(p0, 2 * b),
-                                                               client::make_policy(p1, 2 * b + 1)};
-    for (auto& p : policies) p->start(in_process_match_info(sport, "1v1", *match));
-    std::vector<std::vector<float>> obs(2, std::vector<float>(match->obs_size())),
-        act(2, std::vector<float>(match->action_size()));
-    while (!match->outcome().match_over) {
-      for (int i = 0; i < 2; ++i) {
-        match->observe(i, obs[i]);
-        policies[i]->act(obs[i], act[i]);
-      }
-      match->step({act[0], act[1]});
-      for (const auto& e : match->outcome().info["events"]) {
-        const std::string call = e["call"];
-        const int slot = e.value("slot", -1);
-        if (call == "fall") ++st.falls[slot];
-        if (call == "hit") ++st.hits[slot];
-        if (call == "punch") ++st.scored[slot];
-        if (call == "knockdown") ++st.knockdowns[slot];
-        if (call == "knockout") ++st.knockouts;
-        if (call == "halt") ++st.halts;
-        if (call == "point") ++(e["reason"] == "fall" ? st.by_falls : st.scored)[slot];
-      }
-    }
-    const auto& o = match->outcome();
-    ++st.bouts;
-    st.minutes += match->tick() / 30.0 / 60.0;
-    if (o.winner_team >= 0)
-      ++st.wins[o.winner_team];
-    else
-      ++st.draws;
+// What the bouts of one pairing added up to, in seed order.
+struct BoutStats {
+  std::vector<Bout> bouts;
+  double minutes() const {
+    double m = 0;
+    for (const Bout& b : bouts) m += b.minutes;
+    return m;
   }
+};
+
+Bout play_bout(const sports::Sport& s, const std::string& sport, const std::string& p0,
+               const std::string& p1, std::uint64_t seed) {
+  auto match = s.create({"1v1", seed, 0.0, {}});
+  std::array<std::unique_ptr<client::Policy>, 2> policies = {client::make_policy(p0, 2 * seed),
+                                                             client::make_policy(p1, 2 * seed + 1)};
+  for (auto& p : policies) p->start(in_process_match_info(sport, "1v1", *match));
+  std::vector<std::vector<float>> obs(2, std::vector<float>(match->obs_size())),
+      act(2, std::vector<float>(match->action_size()));
+  Bout st;
+  while (!match->outcome().match_over) {
+    for (int i = 0; i < 2; ++i) {
+      match->observe(i, obs[i]);
+      policies[i]->act(obs[i], act[i]);
+    }
+    match->step({act[0], act[1]});
+    for (const auto& e : match->outcome().info["events"]) {
+      const std::string call = e["call"];
+      const int slot = e.value("slot", -1);
+      if (call == "fall") ++st.falls[slot];
+      if (call == "hit") ++st.hits[slot];
+      if (call == "punch") ++st.scored[slot];
+      if (call == "knockdown") ++st.knockdowns[slot];
+      if (call == "knockout") ++st.knockouts;
+      if (call == "halt") ++st.halts;
+      if (call == "point") ++(e["reason"] == "fall" ? st.by_falls : st.scored)[slot];
+    }
+  }
+  st.minutes = match->tick() / 30.0 / 60.0;
+  st.winner = match->outcome().winner_team;
+  st.ending = match->outcome().reason;
   return st;
 }
 
-nlohmann::json to_json(const BoutStats& s, const std::string& sport) {
+// The bouts of one pairing on `threads` threads (each bout is its own world; the results are
+// gathered in seed order, so the figures do not depend on the thread count).
+BoutStats play_bouts(const std::string& sport, const std::string& p0, const std::string& p1,
+                     const std::vector<std::uint64_t>& seeds, int threads) {
+  const auto& s = sports::sport_or_throw(sport);
+  BoutStats st;
+  st.bouts.resize(seeds.size());
+  std::atomic<size_t> next{0};
+  std::vector<std::thread> pool;
+  for (int t = 0; t < std::max(1, threads); ++t)
+    pool.emplace_back([&] {
+      for (size_t k = next++; k < seeds.size(); k = next++)
+        st.bouts[k] = play_bout(s, sport, p0, p1, seeds[k]);
+    });
+  for (auto& th : pool) th.join();
+  return st;
+}
+
+// A rate per minute over bouts, sum(counts) / sum(minutes), with its 95% interval by the delta
+// method over bouts (ratio estimator: bouts differ in length).
+nlohmann::json per_minute(const std::vector<double>& counts, const std::vector<double>& minutes) {
+  const double n = static_cast<double>(counts.size());
+  double c = 0, m = 0;
+  for (size_t k = 0; k < counts.size(); ++k) c += counts[k], m += minutes[k];
+  const double rate = m > 0 ? c / m : 0;
+  double var = 0;
+  for (size_t k = 0; k < counts.size(); ++k) var += std::pow(counts[k] - rate * minutes[k], 2);
+  const double half = n > 1 && m > 0 ? 1.96 * std::sqrt(var / (n - 1) / n) / (m / n) : 0;
+  return {{"per_min", rate}, {"ci95", {std::max(0.0, rate - half), rate + half}}};
+}
+
+nlohmann::json to_json(const BoutStats& st, const std::string& sport) {
   const bool fencing = sport == "fencing";
+  auto sum = [&](auto field) {
+    std::array<int, 2> t{};
+    for (const Bout& b : st.bouts)
+      for (int i = 0; i < 2; ++i) t[i] += (b.*field)[i];
+    return t;
+  };
+  const int n = static_cast<int>(st.bouts.size());
+  std::array<int, 2> wins{};
+  int draws = 0, halts = 0, knockouts = 0, by_points = 0;
+  std::map<std::string, int> endings;
+  std::vector<double> scored, falls, minutes;
+  for (const Bout& b : st.bouts) {
+    if (b.winner >= 0)
+      ++wins[b.winner];
+    else
+      ++draws;
+    halts += b.halts;
+    knockouts += b.knockouts;
+    ++endings[b.ending];
+    // Decided on the score: fencing, won on touches (at the touches or leading at the time
+    // limit; by default a fall gives no touch); boxing, on the cards (a decision or a decision
+    // draw), not by a knock-out.
+    by_points += fencing ? b.winner >= 0 && b.by_falls[0] + b.by_falls[1] == 0
+                         : b.ending == "decision" || b.ending == "decision_draw";
+    scored.push_back(b.scored[0] + b.scored[1]);
+    falls.push_back(b.falls[0] + b.falls[1]);
+    minutes.push_back(b.minutes);
+  }
+  const std::string scored_name = fencing ? "touches" : "scoring_punches";
+  const nlohmann::json scored_rate = per_minute(scored, minutes);
   nlohmann::json j = {
-      {"bouts", s.bouts},
-      {"bout_minutes", s.minutes},
-      {fencing ? "touches" : "scoring_punches", s.scored},
-      {fencing ? "touches_per_min" : "punches_per_min", (s.scored[0] + s.scored[1]) / s.minutes},
-      {"falls", s.falls},
-      {"wins", s.wins},
-      {"wins_0_ci95", wilson_95(s.wins[0], s.bouts)},  // slot 0's share of bouts won
-      {"draws", s.draws}};
+      {"bouts", n},
+      {"bout_minutes", st.minutes()},
+      {scored_name, sum(&Bout::scored)},
+      {fencing ? "touches_per_min" : "punches_per_min", scored_rate["per_min"]},
+      {fencing ? "touches_per_min_ci95" : "punches_per_min_ci95", scored_rate["ci95"]},
+      {"falls", sum(&Bout::falls)},
+      {"falls_per_min", per_minute(falls, minutes)["per_min"]},
+      {"falls_per_min_ci95", per_minute(falls, minutes)["ci95"]},
+      {"endings", endings},
+      {fencing ? "decided_by_touches" : "decided_by_points", n > 0 ? double(by_points) / n : 0},
+      {fencing ? "decided_by_touches_ci95" : "decided_by_points_ci95", wilson_95(by_points, n)},
+      {"wins", wins},
+      {"wins_0_ci95", wilson_95(wins[0], n)},  // slot 0's share of bouts won
+      {"draws", draws}};
   if (fencing) {
-    j["hits"] = s.hits;
-    j["touches_by_falls"] = s.by_falls;
-    j["halts"] = s.halts;
+    j["hits"] = sum(&Bout::hits);
+    j["touches_by_falls"] = sum(&Bout::by_falls);
+    j["halts"] = halts;
   } else {
-    j["knockdowns"] = s.knockdowns;
-    j["knockouts"] = s.knockouts;
+    j["knockdowns"] = sum(&Bout::knockdowns);
+    j["knockouts"] = knockouts;
   }
   return j;
 }
@@ -95,10 +171,20 @@ nlohmann::json run_combat_bench(const CombatBenchOptions& o) {
   std::vector<std::array<std::string, 2>> pairings = {
       {"scripted", "scripted"}, {"scripted", "zero"}, {"random", "random"}};
   if (!o.challenger.empty()) pairings = {{"scripted", "scripted"}, {o.challenger, "scripted"}};
+  if (!o.pairings.empty()) {
+    pairings.clear();
+    for (const std::string& p : o.pairings) {
+      const size_t vs = p.find("_vs_");
+      if (vs == std::string::npos || vs == 0 || vs + 4 >= p.size())
+        throw std::invalid_argument(
+            "--pairings: '" + p + "' is not A_vs_B (e.g. scripted_vs_scripted, scripted_vs_zero)");
+      pairings.push_back({p.substr(0, vs), p.substr(vs + 4)});
+    }
+  }
   for (const std::string& sport : o.sports) {
     nlohmann::json& r = report["sports"][sport];
     for (const auto& [a, b] : pairings)
-      r["bouts"][a + "_vs_" + b] = to_json(play_bouts(sport, a, b, seeds), sport);
+      r["bouts"][a + "_vs_" + b] = to_json(play_bouts(sport, a, b, seeds, o.threads), sport);
     if (!o.speed) continue;
     const core::ModelSpec& players =
         sport == "fencing" ? sports::fencing::fencer_model() : sports::boxing::boxer_model(true);
@@ -125,7 +211,19 @@ void print_combat_report(const nlohmann::json& report) {
       else
         std::printf(", knock-downs %d-%d, knock-outs %d", s["knockdowns"][0].get<int>(),
                     s["knockdowns"][1].get<int>(), s["knockouts"].get<int>());
-      std::printf(", falls %d-%d, wins %d-%d (slot 0: 95%% interval %.0f-%.0f%%), draws %d\n",
+      const char* decided = fencing ? "decided_by_touches" : "decided_by_points";
+      std::printf(
+          "\n    per min: %s %.2f (95%% %.2f-%.2f), falls %.2f (95%% %.2f-%.2f); decided by %s "
+          "%.0f%% (95%% %.0f-%.0f%%); endings %s\n   ",
+          fencing ? "touches" : "punches",
+          s[fencing ? "touches_per_min" : "punches_per_min"].get<double>(),
+          s[fencing ? "touches_per_min_ci95" : "punches_per_min_ci95"][0].get<double>(),
+          s[fencing ? "touches_per_min_ci95" : "punches_per_min_ci95"][1].get<double>(),
+          s["falls_per_min"].get<double>(), s["falls_per_min_ci95"][0].get<double>(),
+          s["falls_per_min_ci95"][1].get<double>(), fencing ? "touches" : "points",
+          100 * s[decided].get<double>(), 100 * s[std::string(decided) + "_ci95"][0].get<double>(),
+          100 * s[std::string(decided) + "_ci95"][1].get<double>(), s["endings"].dump().c_str());
+      std::printf(" falls %d-%d, wins %d-%d (slot 0: 95%% interval %.0f-%.0f%%), draws %d\n",
                   s["falls"][0].get<int>(), s["falls"][1].get<int>(), s["wins"][0].get<int>(),
                   s["wins"][1].get<int>(), 100 * s["wins_0_ci95"][0].get<double>(),
                   100 * s["wins_0_ci95"][1].get<double>(), s["draws"].get<int>());

@@ -21,6 +21,9 @@ struct CombatBenchOptions {
   std::string challenger;
   std::vector<std::string> sports = {"fencing", "boxing"};
   bool speed = true;  // also the 1v1 ticks/s figure
+  // Only these pairings ("scripted_vs_scripted", ...); empty: the three above.
+  std::vector<std::string> pairings;
+  int threads = 1;  // bouts played at once (the figures do not depend on it)
 };
 
 nlohmann::json run_combat_bench(const CombatBenchOptions& options);

@@ -23,6 +23,12 @@ constexpr double kGuardElbow = 1.8;    // rad
 constexpr double kGuardForward = 0.6;  // the guard's upper arm: forward, out and down
 constexpr double kPunchEvery_s = 0.6;  // a punch, then the other hand
 constexpr double kPunchFor_s = 0.25;   // the arm out, then back to the guard
+// In and out (tuned on seeds 1-12, docs/combat-sports.md): close range is where two boxers
+// collide and fall, and a boxer down never gets up, so each stays out of reach between
+// combinations and steps in only to throw one.
+constexpr double kInFor_s = 1.2;   // in range for a combination
+constexpr double kOutFor_s = 1.5;  // then out of reach
+constexpr double kOut_m = 1.5;     // root to root out of reach
 
 void guard(std::span<const float> o, std::span<float> a, Arm arm) {
   const double side = arm == Arm::Right ? -1 : 1;
@@ -51,7 +57,7 @@ void ScriptedBoxingPolicy::start(const MatchInfo& match) {
   gains.max_speed = kMaxSpeed;
   gains.balance = {2.0, 2.0, 0.0, 2.0};
   legs_.emplace(gains, control_dt_);
-  clock_s_ = 0;
+  clock_s_ = cycle_s_ = 0;
 }
 
 void ScriptedBoxingPolicy::act(std::span<const float> o, std::span<float> a) {
@@ -71,7 +77,10 @@ void ScriptedBoxingPolicy::act(std::span<const float> o, std::span<float> a) {
   if (resting) {
     legs_->act(o, Eigen::Vector2d::Zero(), 0, a);
   } else {
-    legs_->act(o, line - towards * kRange_m, bearing, a);
+    cycle_s_ += control_dt_;
+    if (cycle_s_ > kInFor_s + kOutFor_s) cycle_s_ = 0;
+    const double range = cycle_s_ < kInFor_s ? kRange_m : kOut_m;
+    legs_->act(o, line - towards * range, bearing, a);
   }
   guard(o, a, Arm::Left);
   guard(o, a, Arm::Right);

@@ -1,7 +1,8 @@
 // The scripted baseline for boxing: the yardstick learned boxers must beat. It reads only the
 // observation (blocks by name):
 //
-// - it faces the opponent and walks (StepController) to punching range;
+// - it faces the opponent and moves in and out (StepController): in to punching range for a
+//   combination, then back out of reach, so that the two do not stand chest to chest;
 // - it holds a guard: upper arms forward and down, elbows bent, gloves up before the chin;
 // - in range it punches: left jab and right cross in turn, each arm thrown straight at the
 //   opponent's head or chest and drawn back to the guard;
@@ -28,6 +29,7 @@ class ScriptedBoxingPolicy : public Policy {
   double control_dt_ = 0;
   std::optional<StepController> legs_;
   double clock_s_ = 0;  // time in range, for the punches' rhythm
+  double cycle_s_ = 0;  // time into the in-and-out cycle
 };
 
 }  // namespace olympics::client

@@ -1,0 +1,83 @@
+// The scripted fencer and boxer on fixed seeds: most of the fencer's exchanges end with a touch
+// by the tip rather than a fall, and the boxer's punches reach the head or the chest.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/control_rate.h"
+#include "registry.h"
+#include "scripted_boxing.h"
+#include "scripted_fencing.h"
+
+namespace olympics::client {
+namespace {
+
+// Two scripted players of `sport` on `seed` for at most `seconds` of play: every referee call.
+template <class Player>
+std::vector<nlohmann::json> calls_of_a_bout(const std::string& sport, std::uint64_t seed,
+                                            double seconds) {
+  auto match = sports::sport_or_throw(sport).create({"1v1", seed, 0.0, {}});
+  const auto layout = ObservationLayout::from_blocks(match->layout().observation);
+  Player players[2];
+  for (auto& p : players) p.start({sport, "1v1", core::kControlDt, layout, 69});
+  std::vector<float> obs[2] = {std::vector<float>(match->obs_size()),
+                               std::vector<float>(match->obs_size())};
+  std::vector<float> act[2] = {std::vector<float>(69), std::vector<float>(69)};
+  std::vector<nlohmann::json> calls;
+  for (int tick = 0; tick < seconds * 30 && !match->outcome().match_over; ++tick) {
+    for (int s = 0; s < 2; ++s) {
+      match->observe(s, obs[s]);
+      players[s].act(obs[s], act[s]);
+    }
+    match->step({std::span<const float>(act[0]), std::span<const float>(act[1])});
+    for (const auto& ev : match->outcome().info.value("events", nlohmann::json::array()))
+      calls.push_back(ev);
+  }
+  return calls;
+}
+
+TEST(ScriptedFencingPolicy, MostExchangesEndWithATouchByTheTipNotAFall) {
+  // The first four exchanges of three bouts: each ends with a touch by the tip (a point for a
+  // touch or a double) or a halt (off the piste, a fall, ...). Most are touches, and more
+  // touches than falls. (The fencer of this commit: 7 touches and 4 falls in 12; a toolkit
+  // fencer that made 11 and 1 here fell more often on unseen seeds: docs/combat-sports.md.)
+  int touches = 0, falls = 0, exchanges = 0;
+  for (std::uint64_t seed : {1, 2, 3}) {
+    int seen = 0;
+    for (const auto& c : calls_of_a_bout<ScriptedFencingPolicy>("fencing", seed, 30)) {
+      const std::string call = c.value("call", "");
+      if (seen >= 4 || (call != "point" && call != "halt")) continue;
+      ++seen, ++exchanges;
+      if (call == "point" && c.value("reason", "") != "fall") ++touches;
+      if (call == "halt" && c.value("reason", "") == "fall") ++falls;
+    }
+  }
+  EXPECT_GE(exchanges, 9);
+  EXPECT_GT(2 * touches, exchanges) << "exchanges ending with a touch by the tip";
+  EXPECT_GT(touches, falls) << "exchanges halted by a fall";
+}
+
+TEST(ScriptedBoxingPolicy, PunchesReachTheHeadOrTheChest) {
+  // In the first 20 s of four bouts, before anyone is knocked down, punches score on the head or
+  // the chest (the targets it throws at). Not in every bout: on seed 1 a boxer goes down after
+  // 2.8 s, before any punch (docs/combat-sports.md: most bouts still end by a knock-out).
+  int on_target = 0, bouts_with_one = 0;
+  for (std::uint64_t seed : {1, 2, 3, 4}) {
+    int in_this_bout = 0;
+    for (const auto& c : calls_of_a_bout<ScriptedBoxingPolicy>("boxing", seed, 20)) {
+      const std::string call = c.value("call", "");
+      if (call == "knockdown") break;
+      const std::string body = c.value("body", "");
+      if (call == "punch" && (body == "Head" || body == "Chest")) ++in_this_bout;
+    }
+    on_target += in_this_bout;
+    bouts_with_one += in_this_bout > 0;
+  }
+  EXPECT_GE(on_target, 4) << "scoring punches on the head or chest before a knock-down";
+  EXPECT_GE(bouts_with_one, 3) << "of 4 bouts";
+}
+
+}  // namespace
+}  // namespace olympics::client
