@@ -39,6 +39,9 @@ void play_one(olympics::client::MatchClient& client, const std::string& match_id
       std::fflush(stdout);
     };
   const auto& r = olympics::client::play_joined_match(client, play);
+  if (client.ignored_errors() > 0)  // a server never sends these: someone else on the network did
+    std::fprintf(stderr, "%s ignored %ld error(s) naming it for matches it does not hold\n",
+                 agent_name.c_str(), client.ignored_errors());
   if (json) {
     nlohmann::json out = {
         {"match_id", r.match_id}, {"sport", r.sport},        {"mode", r.mode},

@@ -18,6 +18,8 @@ class MatchClient {
  public:
   explicit MatchClient(const ClientOptions& options = {});
   const std::string& client_id() const { return connection_.client_id(); }
+  // Errors naming this client for a match it does not hold, not acted on (docs/security.md).
+  long ignored_errors() const { return connection_.ignored_errors(); }
 
   olympics::match_created_t request_match(const MatchRequest& request, double timeout_s = 10);
   // Waits for the league to assign a match to the live learner `learner` (an entrant

@@ -65,6 +65,8 @@ class VectorClient {
   int action_size() const { return action_size_; }
   const std::vector<std::string>& term_names() const { return term_names_; }
   const std::string& client_id() const { return connection_.client_id(); }
+  // Errors naming this client for a match it does not hold, not acted on (docs/security.md).
+  long ignored_errors() const { return connection_.ignored_errors(); }
 
   // The batches returned are the client's own arrays, valid until its next reset, step or recv.
   // Starts every environment's first match and returns their first observations.

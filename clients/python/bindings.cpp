@@ -122,6 +122,7 @@ PYBIND11_MODULE(_client, m) {
            py::arg("lcm_url") = "", py::arg("agent_name") = "python", py::arg("policy_id") = "",
            py::arg("policy_version") = "", py::arg("secret_file") = "")
       .def_property_readonly("client_id", &MatchClient::client_id)
+      .def_property_readonly("ignored_errors", &MatchClient::ignored_errors)
       .def(
           "request_match",
           [](MatchClient& c, const std::string& sport, const std::string& mode, std::int64_t seed,

@@ -86,6 +86,7 @@ void bind_vector_client(py::module_& m) {
       .def_property_readonly("action_size", &VectorClient::action_size)
       .def_property_readonly("term_names", &VectorClient::term_names)
       .def_property_readonly("client_id", &VectorClient::client_id)
+      .def_property_readonly("ignored_errors", &VectorClient::ignored_errors)
       .def("match_id", [](const VectorClient& c, int env) { return c.match(env).match_id; })
       .def("reset",
            [](VectorClient& c) {

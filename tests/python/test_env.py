@@ -181,6 +181,36 @@ class EnvAgainstRealServer(unittest.TestCase):
             server.kill()
             server.wait()
 
+    def test_errors_naming_a_match_it_does_not_hold_are_ignored_and_counted(self):
+        """An error naming this env's client with a match it does not hold changes nothing and
+        is counted: a server never sends one, so someone else did (docs/security.md)."""
+        import socket
+        import struct
+        from olympics import error_t, protocol_version_t
+        env = OlympicsParallelEnv(sport="sandbox", mode="1v1", lcm_url=self.url, time_limit_s=3.0)
+        env.reset(seed=1)
+        self.assertEqual(env.ignored_errors, 0)
+        forged = error_t()
+        forged.protocol_version = protocol_version_t.VERSION
+        forged.server_id, forged.match_id = "py", "py_other-1-7"
+        forged.client_id, forged.code = env._client.client_id, "UNKNOWN_MATCH"
+        forged.message = "forged: the env must not stop for this"
+        forged.signature = bytes(56)
+        group, port = self.url[len("udpm://"):].split("?")[0].split(":")
+        sender = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        sender.setsockopt(socket.IPPROTO_IP, socket.IP_MULTICAST_TTL, 0)
+        ticks = 0
+        while env.agents:  # LCM's small-message datagram: magic, sequence, channel, payload
+            sender.sendto(struct.pack(">II", 0x4C433032, ticks) + b"OLY_ERROR\0" + forged.encode(),
+                          (group, int(port)))
+            env.step({a: np.zeros(69, dtype=np.float32) for a in env.agents})
+            ticks += 1
+        # Played to the end by the sport's own rules (zero actions: both fall, about 2 s).
+        self.assertGreater(ticks, 30)
+        self.assertIn(env.result.get("reason"), ("all_fell", "last_team_standing", "time_limit"),
+                      env.result)
+        self.assertGreater(env.ignored_errors, 0)
+
     def test_errors_reach_python(self):
         with self.assertRaises(ValueError) as caught:  # the catalog knows before any server
             OlympicsParallelEnv(sport="curling", lcm_url=self.url)

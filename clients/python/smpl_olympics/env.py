@@ -99,6 +99,12 @@ class OlympicsParallelEnv(_ParallelEnvBase):
         return self
 
     @property
+    def ignored_errors(self):
+        """Errors naming this env's client for a match it does not hold: not acted on, counted
+        (a server never sends them; docs/security.md). 0 before the first reset."""
+        return self._client.ignored_errors if self._client is not None else 0
+
+    @property
     def num_agents(self):
         return len(self.agents)
 

@@ -74,6 +74,12 @@ class OlympicsVectorEnv:
         self._servers_checked = False
 
     @property
+    def ignored_errors(self):
+        """Errors naming this env's client for a match it does not hold: not acted on, counted
+        (a server never sends them; docs/security.md). 0 before the first reset."""
+        return self._client.ignored_errors if self._client is not None else 0
+
+    @property
     def lcm_url(self):
         """The server's URL: the one given, or the private server's once it runs ("" before)."""
         return self._settings["lcm_url"]
