@@ -3,9 +3,11 @@ package index) builds the wheel with the project's CMake; the wheel installs int
 without the system's packages (numpy from the index) and plays a match on the olympics-server it
 carries, with nothing else started and nothing of the build on PATH.
 
-The wheel's CMake build folder is kept in the test build's pip-wheel/<wheel tag>/ (with ccache
-when it is installed), so a rerun recompiles only what changed: from cold it compiles the module,
-the sports and the server once (minutes on 2 cores), warm it takes seconds."""
+The wheel's CMake build folder is kept beside the test's build folder (build/ -> build-pip-wheel/),
+so a rerun recompiles only what changed. With ccache installed (deploy/build.sh uses it too) and
+its base directory at the checkout, a first wheel build after deploy/build.sh is cache hits for
+everything but the module: both builds are Ninja builds one folder below the checkout, so their
+compile commands, made relative by ccache, are the same."""
 import glob
 import json
 import os
@@ -19,7 +21,7 @@ import unittest
 from server_process import BIN
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-BUILD_DIR = os.path.join(os.path.dirname(os.path.abspath(BIN)), "pip-wheel", "{wheel_tag}")
+BUILD_DIR = os.path.dirname(os.path.dirname(os.path.abspath(BIN))) + "-pip-wheel"
 
 PLAY = textwrap.dedent("""
     import json, os
@@ -44,6 +46,8 @@ def clean_environment():
            if k != "PYTHONPATH" and not k.startswith("OLYMPICS_")}
     if shutil.which("ccache") and "CMAKE_CXX_COMPILER_LAUNCHER" not in env:
         env["CMAKE_CXX_COMPILER_LAUNCHER"] = "ccache"
+        env["CMAKE_C_COMPILER_LAUNCHER"] = "ccache"
+        env.setdefault("CCACHE_BASEDIR", REPO)
     return env
 
 
@@ -63,13 +67,12 @@ class PipInstall(unittest.TestCase):
         (wheel,) = glob.glob(os.path.join(wheels, "smpl_olympics-*.whl"))
 
         # The project's own CMake built it, in the kept folder, with the package-only option.
-        build_dir = BUILD_DIR.format(wheel_tag=os.path.basename(wheel).split("-", 2)[2][:-4])
-        with open(os.path.join(build_dir, "CMakeCache.txt")) as f:
+        with open(os.path.join(BUILD_DIR, "CMakeCache.txt")) as f:
             cache = f.read()
         self.assertIn(f"CMAKE_HOME_DIRECTORY:INTERNAL={REPO}\n", cache)
         self.assertIn("OLYMPICS_PYTHON_PACKAGE_ONLY:BOOL=ON", cache)
         # Ninja tracks headers: a header change recompiles what includes it.
-        deps = subprocess.run(["ninja", "-C", build_dir, "-t", "deps",
+        deps = subprocess.run(["ninja", "-C", BUILD_DIR, "-t", "deps",
                                "clients/CMakeFiles/smpl_olympics_client.dir/python/bindings.cpp.o"],
                               capture_output=True, text=True)
         self.assertIn(os.path.join(REPO, "clients", "python", "bindings.h"), deps.stdout,
