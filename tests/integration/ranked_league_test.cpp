@@ -3,8 +3,12 @@
 // the game is stored with the eight places of the server's record (info["places"]) and the
 // table rates them with one eight-team Weng-Lin update. The sport is the test's parameter: the
 // field events today, the 8-athlete hurdles race of issue 31 once it lands (add it to the list).
+// And a tournament of heats killed with SIGKILL resumes to the table of an uninterrupted one.
+#include <chrono>
+#include <csignal>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <thread>
 
 #include "leaderboard.h"
 #include "league_store.h"
@@ -100,6 +104,87 @@ TEST_P(RankedLeague, AnEightAthleteCompetitionIsStoredWithEightRankedPlacesAndRa
   for (size_t i = 0; i < 8; ++i) {
     EXPECT_EQ(rows[i].at("entrant"), board.rows[i].name);
     EXPECT_DOUBLE_EQ(rows[i].at("mu").get<double>(), board.rows[i].skill.mu);
+  }
+}
+
+std::unique_ptr<Process> heats_of_four(const ServerFixture& server, const std::string& db,
+                                       const std::string& log) {
+  return std::make_unique<Process>(
+      std::vector<std::string>{program("olympics-league"),
+                               "run",
+                               "--db",
+                               db,
+                               "--name",
+                               "heats",
+                               "--sport",
+                               "long_jump",
+                               "--mode",
+                               "competition_4",
+                               "--options",
+                               R"({"rules": "official", "attempts": 1, "attempt_s": 2})",
+                               "--entrants",
+                               "zero,random:1,zero,random:2,zero,random:3",
+                               "--seed",
+                               "2",
+                               "--parallel",
+                               "1",
+                               "--lcm-url",
+                               server.url(),
+                               "--log-dir",
+                               temp_dir(),
+                               "--quiet"},
+      log);
+}
+
+// Six entrants in heats of four, killed with SIGKILL once a heat is done and resumed: every heat
+// played once, in the seats scheduled, to the table of an uninterrupted run.
+TEST(RankedLeagueResume, KilledAfterAHeatItResumesToTheSameTable) {
+  ServerFixture server;
+  const std::string dir = temp_dir();
+  auto whole = heats_of_four(server, dir + "/whole.db", dir + "/whole.log");
+  ASSERT_EQ(whole->wait(300), 0) << whole->output();
+
+  const std::string db = dir + "/killed.db";
+  auto first = heats_of_four(server, db, dir + "/first.log");
+  auto done = [&] {
+    try {
+      int n = 0;
+      for (const auto& g : selfplay::LeagueStore(db).games("heats"))
+        n += g.status == selfplay::GameStatus::Done;
+      return n;
+    } catch (const std::exception&) {  // not created yet
+      return 0;
+    }
+  };
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (done() < 1 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  first->signal(SIGKILL);
+  first->wait(10);
+  selfplay::LeagueStore reference(dir + "/whole.db");
+  const auto expected = reference.games("heats");
+  ASSERT_GE(expected.size(), 3u) << "six entrants in heats of four: at least three heats";
+  ASSERT_GE(done(), 1) << first->output();
+  EXPECT_LT(done(), static_cast<int>(expected.size())) << "finished before it was killed";
+
+  auto second = heats_of_four(server, db, dir + "/second.log");
+  ASSERT_EQ(second->wait(300), 0) << second->output();
+  EXPECT_NE(second->output().find("resuming heats"), std::string::npos);
+  selfplay::LeagueStore resumed(db);
+  const auto games = resumed.games("heats");
+  ASSERT_EQ(games.size(), expected.size());
+  for (size_t i = 0; i < games.size(); ++i) {
+    EXPECT_EQ(games[i].status, selfplay::GameStatus::Done) << i;
+    EXPECT_EQ(games[i].seats, expected[i].seats) << i;
+    EXPECT_EQ(games[i].places, expected[i].places) << i;
+  }
+  const auto a = selfplay::compute_leaderboard(*reference.find_tournament("heats"), expected);
+  const auto b = selfplay::compute_leaderboard(*resumed.find_tournament("heats"), games);
+  for (size_t i = 0; i < a.rows.size(); ++i) {
+    EXPECT_EQ(a.rows[i].name, b.rows[i].name);
+    EXPECT_EQ(a.rows[i].skill.mu, b.rows[i].skill.mu);
+    EXPECT_EQ(a.rows[i].skill.sigma, b.rows[i].skill.sigma);
+    EXPECT_EQ(a.rows[i].standing.played, b.rows[i].standing.played);
   }
 }
 
