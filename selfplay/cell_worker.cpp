@@ -153,10 +153,11 @@ class Keeper {
   std::jthread thread_;  // last: it starts once everything it uses is made
 };
 
-// A game not played yet.
-Game fresh_game(int index, int round, int home, int away) {
+// A game not played yet (a ranked fixture keeps its seats).
+Game fresh_game(int index, int round, int home, int away, std::vector<int> seats = {}) {
   Game g;
   g.index = index, g.round = round, g.home = home, g.away = away;
+  g.seats = std::move(seats);
   return g;
 }
 
@@ -285,7 +286,7 @@ class Cell {
     // ones of a single host; games not leased here count as decided for this runner.
     for (auto& g : games) {
       if (std::binary_search(leased.begin(), leased.end(), g.index)) {
-        g = fresh_game(g.index, g.round, g.home, g.away);
+        g = fresh_game(g.index, g.round, g.home, g.away, g.seats);
       } else if (g.status != GameStatus::Done) {
         g.status = GameStatus::Done, g.reason = "played elsewhere";
       }
@@ -297,7 +298,7 @@ class Cell {
     runner.progress = false;
     if (!server_id_.empty()) runner.servers = {server_id_};
     runner.on_game_done = [&](const Game& g) {
-      keeper_.add(t, {g.index, g.match_id, g.home_score, g.reason, g.ticks});
+      keeper_.add(t, {g.index, g.match_id, g.home_score, g.reason, g.ticks, g.places});
     };
     keeper_.hold(t);
     try {
@@ -360,7 +361,8 @@ RoundVerdict queue_next_round(LeagueStore& store, FixtureQueue& queue,
     }
     std::vector<Game> added;
     for (const auto& p : pairs) {
-      Game g = fresh_game(static_cast<int>(games.size() + added.size()), p.round, p.home, p.away);
+      Game g = fresh_game(static_cast<int>(games.size() + added.size()), p.round, p.home, p.away,
+                          p.seats);
       if (p.away < 0) g.status = GameStatus::Done, g.home_score = 1, g.reason = "bye";
       added.push_back(g);
     }

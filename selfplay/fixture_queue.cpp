@@ -24,8 +24,10 @@ CREATE TABLE IF NOT EXISTS fleet_results (
   tournament TEXT NOT NULL, idx INTEGER NOT NULL, fixture_id TEXT NOT NULL, match_id TEXT NOT NULL,
   cell TEXT NOT NULL, home_score DOUBLE PRECISION NOT NULL, reason TEXT NOT NULL,
   ticks INTEGER NOT NULL, stored_at TIMESTAMPTZ NOT NULL DEFAULT now(),
-  PRIMARY KEY (tournament, idx), UNIQUE (fixture_id));
+  places TEXT NOT NULL DEFAULT '', PRIMARY KEY (tournament, idx), UNIQUE (fixture_id));
 )sql";
+// A ranked fixture's places (JSON array, '' for a two-team game): added since the first schema.
+constexpr const char* kPlacesColumn = "TEXT NOT NULL DEFAULT ''";
 
 constexpr int kDone = static_cast<int>(GameStatus::Done);
 
@@ -71,6 +73,7 @@ FixtureQueue::FixtureQueue(const std::string& url, std::string cell) : cell_(std
         " is not a postgresql:// URL (one machine needs no queue: olympics-league run --db FILE)");
   db_ = sql::open_sql_database(url);
   db_->create_schema(kSchema);
+  sql::add_column_if_missing(*db_, "fleet_results", "places", kPlacesColumn);
 }
 
 FixtureQueue::~FixtureQueue() = default;
@@ -132,17 +135,20 @@ bool FixtureQueue::store_result(const std::string& tournament, const FinishedFix
   db_->transaction([&] {
     first = !db_->query(
                     "INSERT INTO fleet_results (tournament, idx, fixture_id, match_id, cell, "
-                    "home_score, reason, ticks) VALUES ($1,$2,$3,$4,$5,$6,$7,$8) "
+                    "home_score, reason, ticks, places) VALUES ($1,$2,$3,$4,$5,$6,$7,$8,$9) "
                     "ON CONFLICT DO NOTHING RETURNING idx",
                     {tournament, std::to_string(r.index), fixture_id, r.match_id, cell_,
-                     sql::exact_text(r.home_score), r.reason, std::to_string(r.ticks)})
+                     sql::exact_text(r.home_score), r.reason, std::to_string(r.ticks),
+                     int_list_text(r.places)})
                  .empty();
     if (first)
       db_->query(
           "UPDATE games SET status = $3, request_id = $4, server_id = $5, match_id = $6, "
-          "home_score = $7, reason = $8, ticks = $9 WHERE tournament = $1 AND idx = $2",
+          "home_score = $7, reason = $8, ticks = $9, places = $10 "
+          "WHERE tournament = $1 AND idx = $2",
           {tournament, std::to_string(r.index), std::to_string(kDone), fixture_id, cell_,
-           r.match_id, sql::exact_text(r.home_score), r.reason, std::to_string(r.ticks)});
+           r.match_id, sql::exact_text(r.home_score), r.reason, std::to_string(r.ticks),
+           int_list_text(r.places)});
     db_->query(
         "UPDATE fleet_queue SET state = 'done', lease_until = NULL "
         "WHERE tournament = $1 AND idx = $2",

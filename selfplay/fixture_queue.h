@@ -34,6 +34,8 @@ struct FinishedFixture {
   double home_score = 0;
   std::string reason;
   int ticks = 0;
+  std::vector<int> places =
+      {};  // a ranked fixture's places per team (Game::places); empty otherwise
 };
 
 class FixtureQueue {

@@ -6,6 +6,32 @@
 
 namespace olympics::selfplay {
 
+namespace {
+
+// A ranked game of N entrants (places per seat): one Weng-Lin update of N teams of one ranked by
+// their places, pairwise Elo (elo_ranked), and each pair of seats as a game in the standings and
+// the payoff matrix (the better place wins, equal places draw). For N = 2 this is exactly what a
+// two-team game with the same result gives.
+void rate_ranked_game(const Game& g, std::vector<SkillRating>& skill, std::vector<double>& elo,
+                      std::vector<GameResult>& results, PayoffMatrix& payoff) {
+  const size_t n = g.seats.size();
+  if (g.places.size() != n) return;  // a result stored without places: nothing to rate
+  std::vector<std::vector<SkillRating>> teams;
+  std::vector<double> elo_before;
+  for (int e : g.seats) teams.push_back({skill[e]}), elo_before.push_back(elo[e]);
+  const auto rated = rate_match(teams, g.places);
+  const auto elo_after = elo_ranked(elo_before, g.places);
+  for (size_t i = 0; i < n; ++i) skill[g.seats[i]] = rated[i][0], elo[g.seats[i]] = elo_after[i];
+  for (size_t a = 0; a < n; ++a)
+    for (size_t b = a + 1; b < n; ++b) {
+      const double score = pair_score(g.places[a], g.places[b]);
+      results.push_back({g.seats[a], g.seats[b], score});
+      payoff.record(g.seats[a], g.seats[b], score);
+    }
+}
+
+}  // namespace
+
 Leaderboard compute_leaderboard(const TournamentSpec& spec, const std::vector<Game>& games) {
   const int n = static_cast<int>(spec.entrants.size());
   std::vector<SkillRating> skill(n);
@@ -18,6 +44,11 @@ Leaderboard compute_leaderboard(const TournamentSpec& spec, const std::vector<Ga
   for (const auto& g : games) {  // in game order, whatever order they finished in
     // A policy against itself says nothing about its strength: no points, no rating change.
     if (g.status != GameStatus::Done || g.home == g.away) continue;
+    if (g.ranked()) {
+      rate_ranked_game(g, skill, elo, results, board.payoff);
+      for (int i = 0; i < n; ++i) board.mu_history[i].push_back(skill[i].mu);
+      continue;
+    }
     results.push_back({g.home, g.away, g.home_score});
     if (g.away < 0) continue;
     const int home_rank = g.home_score > 0.5 ? 0 : 1, away_rank = g.home_score < 0.5 ? 0 : 1;

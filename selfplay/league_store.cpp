@@ -19,10 +19,13 @@ CREATE TABLE IF NOT EXISTS games (
   round INTEGER NOT NULL, home INTEGER NOT NULL, away INTEGER NOT NULL, status INTEGER NOT NULL,
   attempt INTEGER NOT NULL, request_id TEXT NOT NULL, server_id TEXT NOT NULL,
   match_id TEXT NOT NULL, home_score DOUBLE PRECISION NOT NULL, reason TEXT NOT NULL,
-  ticks INTEGER NOT NULL, PRIMARY KEY (tournament, idx));
+  ticks INTEGER NOT NULL, seats TEXT NOT NULL DEFAULT '', places TEXT NOT NULL DEFAULT '',
+  PRIMARY KEY (tournament, idx));
 )sql";
 // Added since the first schema, for league databases made before.
 constexpr const char* kSportOptionsColumn = "TEXT NOT NULL DEFAULT '{}'";
+// A ranked game's seats and places as JSON arrays of integers; '' for a two-team game.
+constexpr const char* kRankedColumn = "TEXT NOT NULL DEFAULT ''";
 
 std::string entrants_json(const TournamentSpec& t) {
   nlohmann::json entrants = nlohmann::json::array();
@@ -33,11 +36,22 @@ std::string entrants_json(const TournamentSpec& t) {
 
 }  // namespace
 
+std::string int_list_text(const std::vector<int>& values) {
+  return values.empty() ? "" : nlohmann::json(values).dump();
+}
+
+std::vector<int> int_list_from_text(const std::string& text) {
+  if (text.empty()) return {};
+  return nlohmann::json::parse(text).get<std::vector<int>>();
+}
+
 // Every step is committed before it is taken, and must survive even a power loss.
 LeagueStore::LeagueStore(const std::string& location)
     : db_(sql::open_sql_database(location, sql::Durability::PowerLoss)) {
   db_->create_schema(kSchema);
   sql::add_column_if_missing(*db_, "tournaments", "sport_options", kSportOptionsColumn);
+  sql::add_column_if_missing(*db_, "games", "seats", kRankedColumn);
+  sql::add_column_if_missing(*db_, "games", "places", kRankedColumn);
 }
 
 LeagueStore::~LeagueStore() = default;
@@ -85,8 +99,8 @@ std::vector<Game> LeagueStore::games(const std::string& tournament) {
   std::vector<Game> out;
   for (const auto& r :
        db_->query("SELECT idx, round, home, away, status, attempt, request_id, server_id, "
-                  "match_id, home_score, reason, ticks FROM games WHERE tournament = $1 "
-                  "ORDER BY idx",
+                  "match_id, home_score, reason, ticks, seats, places FROM games WHERE "
+                  "tournament = $1 ORDER BY idx",
                   {tournament})) {
     Game g;
     g.index = std::stoi(r[0]), g.round = std::stoi(r[1]), g.home = std::stoi(r[2]),
@@ -95,6 +109,7 @@ std::vector<Game> LeagueStore::games(const std::string& tournament) {
     g.attempt = std::stoi(r[5]);
     g.request_id = r[6], g.server_id = r[7], g.match_id = r[8];
     g.home_score = std::stod(r[9]), g.reason = r[10], g.ticks = std::stoi(r[11]);
+    g.seats = int_list_from_text(r[12]), g.places = int_list_from_text(r[13]);
     out.push_back(g);
   }
   return out;
@@ -104,21 +119,24 @@ void LeagueStore::add_games(const std::string& tournament, const std::vector<Gam
   db_->transaction([&] {
     for (const auto& g : games)
       db_->query(
-          "INSERT INTO games VALUES ($1,$2,$3,$4,$5,$6,$7,$8,$9,$10,$11,$12,$13)",
+          "INSERT INTO games (tournament, idx, round, home, away, status, attempt, request_id, "
+          "server_id, match_id, home_score, reason, ticks, seats, places) "
+          "VALUES ($1,$2,$3,$4,$5,$6,$7,$8,$9,$10,$11,$12,$13,$14,$15)",
           {tournament, std::to_string(g.index), std::to_string(g.round), std::to_string(g.home),
            std::to_string(g.away), std::to_string(static_cast<int>(g.status)),
            std::to_string(g.attempt), g.request_id, g.server_id, g.match_id,
-           sql::exact_text(g.home_score), g.reason, std::to_string(g.ticks)});
+           sql::exact_text(g.home_score), g.reason, std::to_string(g.ticks), int_list_text(g.seats),
+           int_list_text(g.places)});
   });
 }
 
 void LeagueStore::update_game(const std::string& tournament, const Game& g) {
   db_->query(
       "UPDATE games SET status = $3, attempt = $4, request_id = $5, server_id = $6, match_id = $7, "
-      "home_score = $8, reason = $9, ticks = $10 WHERE tournament = $1 AND idx = $2",
+      "home_score = $8, reason = $9, ticks = $10, places = $11 WHERE tournament = $1 AND idx = $2",
       {tournament, std::to_string(g.index), std::to_string(static_cast<int>(g.status)),
        std::to_string(g.attempt), g.request_id, g.server_id, g.match_id,
-       sql::exact_text(g.home_score), g.reason, std::to_string(g.ticks)});
+       sql::exact_text(g.home_score), g.reason, std::to_string(g.ticks), int_list_text(g.places)});
 }
 
 }  // namespace olympics::selfplay

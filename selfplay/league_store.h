@@ -48,7 +48,19 @@ struct Game {
   double home_score = 0;  // 1 win, 0.5 draw, 0 loss
   std::string reason;
   int ticks = 0;
+  // A ranked fixture of N entrants (an athletics competition_N): seats[t] plays team t (home and
+  // away are seats[0] and seats[1]); its result is places[t] per team, 1 = first, equal places
+  // tie (the match's info["places"]). Both empty for a two-team game.
+  std::vector<int> seats;
+  std::vector<int> places;
+  bool ranked() const { return !seats.empty(); }
+  // Who plays, team by team: the seats, or home and away.
+  std::vector<int> entrants() const { return ranked() ? seats : std::vector<int>{home, away}; }
 };
+
+// A list of integers as stored in a text column (a JSON array; "" for none), and back.
+std::string int_list_text(const std::vector<int>& values);
+std::vector<int> int_list_from_text(const std::string& text);
 
 class LeagueStore {
  public:

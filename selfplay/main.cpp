@@ -2,6 +2,8 @@
 //
 //   olympics-league run   --db league.db --name cup --format round-robin
 //                         --entrants zero,random:1,random:2,zero [--servers a,b] [--parallel 2]
+//   olympics-league run   --db league.db --name final --sport long_jump --mode competition_8
+//                         --entrants zero,random:1,...   (heats of 8 ranked by places)
 //   olympics-league table --db league.db --name cup [--svg ratings.svg] [--json]
 //   olympics-league list  --db league.db
 //
@@ -16,6 +18,7 @@
 
 #include "cell_command.h"
 #include "fixture_queue.h"
+#include "heats.h"
 #include "leaderboard.h"
 #include "league_store.h"
 #include "matchmaking.h"
@@ -119,7 +122,9 @@ int main(int argc, char** argv) {
                   "separated")
       ->delimiter(',');
   run->add_option("--sport", spec.sport, "sport");
-  run->add_option("--mode", spec.mode, "two-team mode: 1v1, 2v2, ...");
+  run->add_option("--mode", spec.mode,
+                  "two-team mode (1v1, 2v2, ...), or competition_N: N entrants ranked in each "
+                  "match (athletics; docs/league.md)");
   run->add_option("--seed", spec.seed, "tournament seed (match seeds derive from it)");
   run->add_option("--time-limit", spec.time_limit_s, "seconds per match (0: the sport's default)");
   run->add_option("--options", spec.sport_options,
@@ -246,6 +251,12 @@ int main(int argc, char** argv) {
         if (*sp && !selfplay.learner.empty()) bots.insert(bots.begin(), "live:" + selfplay.learner);
         spec.entrants = *sp ? (bots.empty() ? std::vector<Entrant>{} : parse_entrants(bots, 1))
                             : parse_entrants(entrants, 2);
+        if (*sp && ranked_seats(spec.mode) > 2)
+          throw std::invalid_argument(
+              "self-play pairs the learner with one opponent; --mode " + spec.mode +
+              " seats more: rank competitions with olympics-league run --format round-robin");
+        if (*run)
+          check_ranked_tournament(spec.mode, spec.format, static_cast<int>(spec.entrants.size()));
         store.create_tournament(spec);
       }
       if (fleet) {

@@ -44,4 +44,22 @@ EloPair elo_update(double a, double b, double score_a, double k) {
   return {a + change, b - change};
 }
 
+std::vector<double> elo_ranked(const std::vector<double>& ratings, const std::vector<int>& places,
+                               double k) {
+  if (ratings.size() != places.size() || ratings.size() < 2)
+    throw std::invalid_argument("elo_ranked needs at least two players and one place each");
+  const size_t n = ratings.size();
+  const double k_pair = k / static_cast<double>(n - 1);
+  std::vector<double> change(n, 0.0);
+  for (size_t a = 0; a < n; ++a)
+    for (size_t b = a + 1; b < n; ++b) {
+      const EloPair e =
+          elo_update(ratings[a], ratings[b], pair_score(places[a], places[b]), k_pair);
+      change[a] += e.a - ratings[a], change[b] += e.b - ratings[b];
+    }
+  std::vector<double> out(n);
+  for (size_t i = 0; i < n; ++i) out[i] = ratings[i] + change[i];
+  return out;
+}
+
 }  // namespace olympics::selfplay

@@ -19,8 +19,10 @@ struct WengLinSettings {
 };
 
 // Updates every player's rating after one match. teams[i] lists team i's players; rank[i] is team
-// i's place (lower is better, equal ranks draw). Weng & Lin (2011), Algorithm 1 with the
-// Bradley-Terry full-pairing model and gamma = sigma_i / c_iq, as OpenSkill does.
+// i's place (lower is better, equal ranks draw): any number of teams, so a ranked result of N
+// athletes (N teams of one, rank = places) is rated by the same update as a two-team game. Weng &
+// Lin (2011), Algorithm 1 with the Bradley-Terry full-pairing model and gamma = sigma_i / c_iq, as
+// OpenSkill does.
 std::vector<std::vector<SkillRating>> rate_match(const std::vector<std::vector<SkillRating>>& teams,
                                                  const std::vector<int>& rank,
                                                  const WengLinSettings& settings = {});
@@ -30,5 +32,17 @@ struct EloPair {
   double a, b;
 };
 EloPair elo_update(double rating_a, double rating_b, double score_a, double k = 32.0);
+
+// The score of a against b from their places in one ranked game: 1 when a's place is better
+// (lower), 0.5 when equal, 0 when worse.
+inline double pair_score(int place_a, int place_b) {
+  return place_a < place_b ? 1.0 : place_a == place_b ? 0.5 : 0.0;
+}
+
+// Elo after one ranked game of N players (places: 1 = first, equal places tie): every pair is a
+// game (the better place wins, equal places draw) rated from the ratings before it, with
+// K / (N - 1) so that one player's change stays on the 1v1 scale. For N = 2 it is elo_update.
+std::vector<double> elo_ranked(const std::vector<double>& ratings, const std::vector<int>& places,
+                               double k = 32.0);
 
 }  // namespace olympics::selfplay

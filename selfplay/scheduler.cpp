@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "heats.h"
+
 namespace olympics::selfplay {
 namespace {
 
@@ -12,6 +14,30 @@ class TournamentScheduler : public Scheduler {
                    std::vector<Pairing>& out) override {
     for (const auto& g : games)
       if (g.status != GameStatus::Done) return Verdict::Wait;  // rounds start together
+    const int seats = ranked_seats(spec.mode);
+    if (seats > 2) return schedule_heats(spec, games, seats, out);
+    const Verdict verdict = schedule_pairs(spec, games, out);
+    // A ranked mode of two (competition_2) pairs as two teams do, each pair a ranked fixture.
+    if (seats == 2)
+      for (auto& p : out)
+        if (p.away >= 0) p.seats = {p.home, p.away};
+    return verdict;
+  }
+
+ private:
+  // Heats of N for a ranked competition_N: every entrant meets every other in some heat (twice:
+  // double-round-robin), all heats scheduled at once.
+  static Verdict schedule_heats(const TournamentSpec& spec, const std::vector<Game>& games,
+                                int seats, std::vector<Pairing>& out) {
+    check_ranked_tournament(spec.mode, spec.format, static_cast<int>(spec.entrants.size()));
+    if (!games.empty()) return Verdict::Finished;
+    out = heats(static_cast<int>(spec.entrants.size()), seats, spec.seed,
+                spec.format == "double-round-robin" ? 2 : 1);
+    return Verdict::Added;
+  }
+
+  static Verdict schedule_pairs(TournamentSpec& spec, const std::vector<Game>& games,
+                                std::vector<Pairing>& out) {
     const int n = static_cast<int>(spec.entrants.size());
     if (spec.format == "round-robin" || spec.format == "double-round-robin") {
       if (!games.empty()) return Verdict::Finished;

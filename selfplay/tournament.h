@@ -9,6 +9,9 @@ namespace olympics::selfplay {
 struct Pairing {
   int round;
   int home, away;  // entrant indices; home plays slot 0 (team 0); away < 0: a bye for home
+  // A ranked fixture of N entrants (an athletics competition_N): seats[t] plays team t; home and
+  // away are seats[0] and seats[1]. Empty: a two-team game of home and away.
+  std::vector<int> seats = {};
 };
 
 // Every pair once (double = twice, home and away swapped), in rounds where nobody plays twice

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 
 #include "channels.h"
 #include "match_id.h"
@@ -12,6 +13,7 @@
 #include "olympics/match_request_t.hpp"
 #include "olympics/match_result_t.hpp"
 #include "olympics/server_announce_t.hpp"
+#include "ratings.h"
 #include "version.h"
 
 namespace olympics::selfplay {
@@ -34,6 +36,21 @@ std::vector<int> team_slots(const std::vector<int>& slot_teams, int team) {
   for (size_t s = 0; s < slot_teams.size(); ++s)
     if (slot_teams[s] == team) slots.push_back(static_cast<int>(s));
   return slots;
+}
+
+std::vector<int> ranked_places(const std::string& info, int teams, int winner_team) {
+  const auto j = nlohmann::json::parse(info, nullptr, false);
+  if (j.is_object() && j.contains("places") && j["places"].is_array() &&
+      static_cast<int>(j["places"].size()) == teams) {
+    std::vector<int> places;
+    for (const auto& p : j["places"])
+      if (p.is_number_integer() && p.get<int>() >= 1) places.push_back(p.get<int>());
+    if (static_cast<int>(places.size()) == teams) return places;
+  }
+  // No ranking of every team: the winner first and the rest tied behind, or all tied.
+  std::vector<int> places(teams, winner_team >= 0 && winner_team < teams ? 2 : 1);
+  if (winner_team >= 0 && winner_team < teams) places[winner_team] = 1;
+  return places;
 }
 
 namespace {
@@ -141,7 +158,7 @@ bool TournamentRunner::schedule_more() {
   for (const auto& p : pairs) {
     Game g;
     g.index = static_cast<int>(games_.size() + added.size());
-    g.round = p.round, g.home = p.home, g.away = p.away;
+    g.round = p.round, g.home = p.home, g.away = p.away, g.seats = p.seats;
     if (p.away < 0) g.status = GameStatus::Done, g.home_score = 1, g.reason = "bye";
     added.push_back(g);
   }
@@ -241,11 +258,21 @@ void TournamentRunner::on_created(const olympics::match_created_t& created) {
   InFlight& f = in_flight_[g->index];
   if (!f.slot_teams.empty()) return;  // a repeated answer
   std::vector<int> teams(created.slot_team.begin(), created.slot_team.end());
-  if (std::count(teams.begin(), teams.end(), 0) == 0 ||
-      std::count(teams.begin(), teams.end(), 1) == 0 ||
-      std::any_of(teams.begin(), teams.end(), [](int t) { return t < 0 || t > 1; }))
-    return stop("the league plays modes of two teams; " + spec_.sport + " " + spec_.mode +
-                " has other teams (choose 1v1, 2v2, ...)");
+  const int team_count = static_cast<int>(g->entrants().size());
+  bool every_team_plays = true;
+  for (int t = 0; t < team_count; ++t)
+    every_team_plays = every_team_plays && std::count(teams.begin(), teams.end(), t) > 0;
+  if (!every_team_plays ||
+      std::any_of(teams.begin(), teams.end(), [&](int t) { return t < 0 || t >= team_count; })) {
+    if (g->ranked())
+      return stop("the league seats " + std::to_string(team_count) + " entrants, a team each, in " +
+                  "every match of " + spec_.sport + " " + spec_.mode +
+                  ", but the server's match has other teams (a ranked mode is competition_N: N "
+                  "athletes, each its own team)");
+    return stop(
+        "the league plays modes of two teams, or ranked competitions of N (competition_N); " +
+        spec_.sport + " " + spec_.mode + " has other teams (choose 1v1, 2v2, ...)");
+  }
   f.slot_teams = teams;
   if (g->match_id.empty()) {
     g->match_id = created.match_id;
@@ -279,11 +306,13 @@ void TournamentRunner::start_workers(Game& g) {
   f.workers_started = true;
   f.last_request = Clock::now();
   assign_live(g);
-  const char* timeout_s = spec_.entrants[g.home].is_live() || spec_.entrants[g.away].is_live()
-                              ? kAgentTimeoutWithLiveLearnerS
-                              : kAgentTimeoutS;
-  for (int team = 0; team < 2; ++team) {
-    const Entrant& e = spec_.entrants[team == 0 ? g.home : g.away];
+  const std::vector<int> seated = g.entrants();
+  const char* timeout_s =
+      std::any_of(seated.begin(), seated.end(), [&](int e) { return spec_.entrants[e].is_live(); })
+          ? kAgentTimeoutWithLiveLearnerS
+          : kAgentTimeoutS;
+  for (int team = 0; team < static_cast<int>(seated.size()); ++team) {
+    const Entrant& e = spec_.entrants[seated[team]];
     if (e.is_live()) continue;  // a live learner joins by itself: assign_live()
     std::vector<std::string> argv = {settings_.agent_program,
                                      "--match",
@@ -310,8 +339,9 @@ void TournamentRunner::start_workers(Game& g) {
 
 // Tells the live learners among the game's entrants which match and slots to play.
 void TournamentRunner::assign_live(const Game& g) {
-  for (int team = 0; team < 2; ++team) {
-    const Entrant& e = spec_.entrants[team == 0 ? g.home : g.away];
+  const std::vector<int> seated = g.entrants();
+  for (int team = 0; team < static_cast<int>(seated.size()); ++team) {
+    const Entrant& e = spec_.entrants[seated[team]];
     if (!e.is_live()) continue;
     olympics::league_assignment_t a;
     a.protocol_version = protocol::kProtocolVersion;
@@ -321,7 +351,10 @@ void TournamentRunner::assign_live(const Game& g) {
     a.match_id = g.match_id;
     a.slots = team_slots(in_flight_.at(g.index).slot_teams, team);
     a.num_slots = static_cast<int>(a.slots.size());
-    a.opponent = spec_.entrants[team == 0 ? g.away : g.home].name;
+    a.opponent.clear();  // the others, in seat order
+    for (int other = 0; other < static_cast<int>(seated.size()); ++other)
+      if (other != team)
+        a.opponent += (a.opponent.empty() ? "" : ",") + spec_.entrants[seated[other]].name;
     transport_.publish(protocol::kLeague, a);
   }
 }
@@ -335,6 +368,10 @@ void TournamentRunner::on_result(const olympics::match_result_t& result) {
       return retry(g, result.reason);
     g.status = GameStatus::Done;
     g.home_score = result.winner_team == 0 ? 1.0 : result.winner_team == 1 ? 0.0 : 0.5;
+    if (g.ranked()) {
+      g.places = ranked_places(result.info, static_cast<int>(g.seats.size()), result.winner_team);
+      g.home_score = pair_score(g.places[0], g.places[1]);
+    }
     g.reason = result.reason;
     g.ticks = result.ticks;
     save(g);
@@ -346,9 +383,9 @@ void TournamentRunner::on_result(const olympics::match_result_t& result) {
 }
 
 void TournamentRunner::retry(Game& g, const std::string& why) {
-  std::fprintf(stderr, "\ngame %d (%s vs %s): %s; trying again\n", g.index,
-               spec_.entrants[g.home].name.c_str(), spec_.entrants[g.away].name.c_str(),
-               why.c_str());
+  std::string who;
+  for (int e : g.entrants()) who += (who.empty() ? "" : " vs ") + spec_.entrants[e].name;
+  std::fprintf(stderr, "\ngame %d (%s): %s; trying again\n", g.index, who.c_str(), why.c_str());
   g.status = GameStatus::Pending;
   ++g.attempt;
   g.match_id.clear();

@@ -42,6 +42,11 @@ struct RunnerSettings {
 // order. Each entrant plays all the slots of its team.
 std::vector<int> team_slots(const std::vector<int>& slot_teams, int team);
 
+// A ranked fixture's result from its match: info["places"] (the referee's place per team, 1 =
+// first, equal places tie), when it holds a place >= 1 for each of `teams`; otherwise the
+// winner first and everyone else tied second (winner_team -1: all tied).
+std::vector<int> ranked_places(const std::string& info, int teams, int winner_team);
+
 class TournamentRunner {
  public:
   TournamentRunner(LeagueStore& store, TournamentSpec spec, RunnerSettings settings,

@@ -284,7 +284,8 @@ TEST(League, TwoVersusTwoEachEntrantPlaysItsWholeTeam) {
                "--entrants", "zero,zero", "--lcm-url", servers.url},
               dir + "/ffa.log");
   EXPECT_EQ(ffa.wait(20), 2);
-  EXPECT_NE(ffa.output().find("the league plays modes of two teams; sandbox ffa4 has other teams"),
+  EXPECT_NE(ffa.output().find("the league plays modes of two teams, or ranked competitions of N "
+                              "(competition_N); sandbox ffa4 has other teams"),
             std::string::npos)
       << ffa.output();
 }
