@@ -26,6 +26,7 @@ struct CellSettings {
   std::string server_program;  // its program (olympics-server beside this one)
   int server_capacity = 0;     // its matches at once (0: --parallel; more leaves room for learners)
   std::string health_file;     // touched every second while the cell is well (an exec probe)
+  std::string snapshot_cache;  // where the cell keeps its copies of snapshots ("": in log_dir)
   RunnerSettings runner;       // how games are played inside the cell
 };
 
