@@ -10,12 +10,15 @@
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <regex>
 #include <set>
 #include <thread>
 
 #include "auth.h"
 #include "fixture_queue.h"
+#include "fleet_snapshots.h"
 #include "leaderboard.h"
 #include "league_store.h"
 #include "mlp_snapshot.h"
@@ -129,6 +132,29 @@ TEST(FleetQueue, LeasesAreDisjointExpireBackToTheQueueAndAResultIsStoredOnce) {
   }
   // One machine needs no queue: SQLite is refused with what to use instead.
   EXPECT_THROW(FixtureQueue(temp_dir() + "/league.db", "x"), std::invalid_argument);
+}
+
+// A tournament with a snapshot entrant queued for the fleet: the file's bytes are in the
+// database, and a cell's cache gets exactly those bytes, under its own path.
+TEST(FleetQueue, ASnapshotEntrantTravelsThroughTheDatabaseByteForByte) {
+  const std::string url = postgres_url();
+  if (url.empty()) GTEST_SKIP() << "set OLYMPICS_TEST_POSTGRES_URL (CI does)";
+  const std::string name = unique_name("snap"), dir = temp_dir();
+  const std::string file = dir + "/policy-v4.safetensors";
+  write_snapshot(file, 4);
+  queue_tournament(url, name, "", "", "round-robin", "zero,mlp:" + file);
+  auto read = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  FixtureQueue queue(url, "check");
+  ASSERT_EQ(queue.snapshot_policies(name), std::vector<std::string>{"mlp:" + file});
+  EXPECT_EQ(queue.snapshot(name, "mlp:" + file), read(file));
+  const auto spec = *selfplay::LeagueStore(url).find_tournament(name);
+  const auto local = selfplay::fetch_snapshots(queue, spec, dir + "/cache");
+  ASSERT_EQ(local.size(), 1u);
+  EXPECT_NE(local.at("mlp:" + file), file);
+  EXPECT_EQ(read(local.at("mlp:" + file)), read(file));
 }
 
 TEST(Fleet, TwoCellsPlayAQueuedTournamentToTheTableOfOneHost) {
