@@ -17,6 +17,7 @@ MatchError, naming every cell's error.
 import numpy as np
 
 from ._client import MatchError
+from .servers import find_servers
 from .vector_env import OlympicsVectorEnv
 
 # Errors that mean a cell (its server, or the way to it) is gone, not a bad request.
@@ -144,18 +145,16 @@ class CellsVectorEnv:
                          "error": str(error)})
         self._lost += lost
         part.env.close()
-        lost_urls = set(self._errors)
-        survivors = sorted({p.cell["lcm_url"]: p.cell for p in self._parts
-                            if p.cell["lcm_url"] not in lost_urls}.values(),
-                           key=lambda c: sum(len(p.rows) for p in self._parts
-                                             if p.cell is c))
         self._moves += 1
         tried = []
-        for cell in survivors:
+        for cell, free in self._room_left():  # the cell with the most room first
+            if free < len(part.rows):
+                tried.append(f"{cell['lcm_url']}: {free} free")
+                continue
             try:
                 moved = _Part(cell, part.rows, self._env_on(cell, len(part.rows), part.rows[0]))
-                first, _ = moved.env.reset()  # the server's room is checked first
-            except MatchError as refused:  # no room there: the next cell
+                first, _ = moved.env.reset()
+            except MatchError as refused:
                 tried.append(f"{cell['lcm_url']}: {refused}")
                 continue
             self._parts.append(moved)
@@ -173,6 +172,21 @@ class CellsVectorEnv:
             for r in part.rows:
                 cells[r] = part.cell["lcm_url"]
         return cells
+
+    def _room_left(self):
+        """(cell, matches it has room for) of the cells still played, the roomiest first (from
+        their servers' announcements; a cell not heard has none)."""
+        cells = {p.cell["lcm_url"]: p.cell for p in self._parts}
+        room = []
+        for url, cell in cells.items():
+            try:
+                servers = find_servers(url, self._kwargs.get("secret_file", ""),
+                                       cell.get("server_id", ""))
+                free = sum(s["capacity"] - s["active_matches"] for s in servers)
+            except MatchError:
+                free = 0
+            room.append((cell, free))
+        return sorted(room, key=lambda cell_free: -cell_free[1])
 
     def lost_matches(self):
         """Every match lost with its cell so far: dicts of env, cell, match_id, error."""
