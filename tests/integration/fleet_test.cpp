@@ -402,14 +402,13 @@ TEST(Fleet, SelfplayOverThreeCellsDecidesAsOneHostThroughAKilledSchedulerAndCell
   scheduler->wait(10);
   scheduler = std::make_unique<Process>(selfplay_argv(url, name, snapshots, {"--fleet"}),
                                         dir + "/scheduler2.log");
-  // sp-2 dies while its server plays a game it leased.
+  // sp-2 dies holding a game it leased (starting or playing it).
   ASSERT_TRUE(wait_for_count(*db,
                              "SELECT count(*) FROM games g JOIN fleet_queue q ON q.tournament = "
                              "g.tournament AND q.idx = g.idx WHERE g.tournament = $1 AND "
                              "q.cell = 'sp-2' AND q.state = 'leased'",
                              {name}, 1))
       << cells[1]->output();
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // its match under way
   const auto held = db->query(
       "SELECT idx FROM fleet_queue WHERE tournament = $1 AND cell = 'sp-2' AND state = 'leased'",
       {name});
