@@ -3,7 +3,9 @@
 // work from the fleet's FixtureQueue in PostgreSQL. It leases a batch of fixtures, plays them as
 // the league plays games on one host (a TournamentRunner over its own server), hands each result
 // to the queue as soon as it is known, and renews its lease meanwhile. When the database is lost
-// it takes no new work, keeps its results and renews nothing, and goes on when it is back.
+// it takes no new work, keeps its results and renews nothing, and goes on when it is back. It
+// plays self-play runs' fixtures too (their scheduler, selfplay_fleet.h, queues them), and its
+// workers play snapshots from its own copies of the database's (fleet_snapshots.h).
 #pragma once
 
 #include <string>

@@ -6,6 +6,8 @@
 //   olympics-league list  --db league.db
 //
 // run resumes a tournament of that name if the database has it (after a crash or kill -9).
+// Across machines (docs/deploy.md): run --fleet / selfplay --fleet queue the games in PostgreSQL
+// and `olympics-league cell` plays them on each host.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -191,7 +193,9 @@ int main(int argc, char** argv) {
 
   CellSettings cell;
   auto* cell_cmd = app.add_subcommand(
-      "cell", "play queued tournaments of a fleet on this cell's server (docs/deploy.md)");
+      "cell",
+      "play the queued tournaments and self-play runs of a fleet on this cell's server "
+      "(docs/deploy.md)");
   add_cell_options(*cell_cmd, cell);
 
   std::string svg;
