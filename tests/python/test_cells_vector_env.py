@@ -51,7 +51,8 @@ class CellsVectorEnvTest(unittest.TestCase):
         a, b = self.cell("cell_a", 4), self.cell("cell_b", 2)
         env = self.env([a, b])
         obs, info = env.reset()
-        self.assertEqual(obs.shape[0], 4)
+        self.assertEqual(obs.shape, env.observation_space.shape)
+        self.assertEqual(env.action_space.shape, (4, env.num_agents, env.action_size))
         b_matches = info["match_ids"][2:]
         self.assertTrue(all(m.startswith("cell_b") for m in b_matches), info["match_ids"])
         actions = np.zeros((4, env.num_agents, env.action_size), np.float32)

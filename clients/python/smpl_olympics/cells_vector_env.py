@@ -18,6 +18,7 @@ import numpy as np
 
 from ._client import MatchError
 from .servers import find_servers
+from .spaces import box
 from .vector_env import OlympicsVectorEnv
 
 # Errors that mean a cell (its server, or the way to it) is gone, not a bad request.
@@ -59,9 +60,14 @@ class CellsVectorEnv:
         first = self._parts[0].env
         self.num_agents, self.agents = first.num_agents, first.agents
         self.obs_size, self.action_size = first.obs_size, first.action_size
-        self.observation_space = first.observation_space  # per cell; shapes below are the whole
         self.single_observation_space = first.single_observation_space
         self.single_action_space = first.single_action_space
+        shape = (self.num_envs, self.num_agents)
+        self.observation_space = box(
+            np.broadcast_to(first.single_observation_space.low, shape + (self.obs_size,)),
+            np.broadcast_to(first.single_observation_space.high, shape + (self.obs_size,)))
+        self.action_space = box(-np.ones(shape + (self.action_size,), np.float32),
+                                np.ones(shape + (self.action_size,), np.float32))
 
     def _env_on(self, cell, n, first_row):
         # Environment seeds as one env of num_envs would give them (seed + row), moves apart.
