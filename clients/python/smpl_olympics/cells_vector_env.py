@@ -13,6 +13,9 @@ match's first observation with episode_over and truncated set (as any match that
 final observation (zeros); infos["lost"] lists them ({"env", "cell", "match_id", "error"}), and
 lost_matches() keeps every one. Only when no cell is left, or none has room, does step() raise
 MatchError, naming every cell's error.
+
+Seeds: each cell's share of the environments (and each share moved) plays from a base seed of its
+own derived from `seed`, so two cells never play the same sequence of match seeds.
 """
 import numpy as np
 
@@ -70,8 +73,11 @@ class CellsVectorEnv:
                                 np.ones(shape + (self.action_size,), np.float32))
 
     def _env_on(self, cell, n, first_row):
-        # Environment seeds as one env of num_envs would give them (seed + row), moves apart.
-        return OlympicsVectorEnv(n, seed=self.seed + first_row + self._moves * self.num_envs,
+        # Each cell's share (and each move) its own base seed, derived from the env's seed: the
+        # shares' seed sequences (base + k * n + e) would overlap if the bases were seed + row.
+        words = np.random.SeedSequence([self.seed, first_row, self._moves]).generate_state(2)
+        base = (int(words[0]) << 8 | int(words[1]) & 0xFF) % (1 << 40)
+        return OlympicsVectorEnv(n, seed=base,
                                  lcm_url=cell["lcm_url"], server_id=cell.get("server_id", ""),
                                  **self._kwargs)
 
