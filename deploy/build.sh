@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Configures and builds everything into build/ (programs in build/bin/).
+# Configures and builds into build/ (programs in build/bin/): everything, or only the targets
+# named (`bash deploy/build.sh olympics-server olympics-league`, as the container image does).
 #
 # A new build folder uses Ninja, and ccache when it is installed (deploy/debian-test-packages.txt
 # installs it): the Python wheel's own CMake build (tests/python/test_pip_install.py, in
@@ -16,4 +17,4 @@ if command -v ccache >/dev/null; then
   export CCACHE_BASEDIR="$PWD"
 fi
 cmake -S . -B build "${args[@]}"
-cmake --build build -j"$(nproc)"
+cmake --build build -j"$(nproc)" ${1:+--target "$@"}

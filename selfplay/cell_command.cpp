@@ -27,6 +27,9 @@ void add_cell_options(CLI::App& cmd, CellSettings& s) {
       ->check(CLI::NonNegativeNumber);
   cmd.add_option("--health-file", s.health_file,
                  "touched every second while the cell runs (a liveness exec probe)");
+  cmd.add_option("--snapshot-cache", s.snapshot_cache,
+                 "where the cell keeps its copies of the snapshots it plays, taken from the "
+                 "database (default: LOG_DIR/fleet-snapshots-CELL)");
   cmd.add_option("--lcm-url", s.runner.lcm_url,
                  "LCM provider URL inside the cell (the default keeps multicast on the host)");
   cmd.add_option("--secret", s.runner.secret_file,

@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "fleet_connection.h"
+#include "fleet_snapshots.h"
 #include "process.h"
 #include "scheduler.h"
 
@@ -26,64 +28,15 @@ void sleep_s(double seconds) {
   std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
 }
 
-// One connection to the fleet's database that survives losing it: work that fails on a lost
-// connection drops it, says once that the cell is paused, and reports false; the next call
-// connects again and says the cell goes on.
-class Connection {
- public:
-  Connection(const CellSettings& settings, bool with_league_store)
-      : settings_(settings), with_store_(with_league_store) {}
-
-  bool run(const std::function<void(FixtureQueue&, LeagueStore*)>& work) {
-    try {
-      if (!queue_) {
-        const std::string url = with_fleet_timeouts(settings_.db_url);
-        queue_ = std::make_unique<FixtureQueue>(url, settings_.cell);
-        if (with_store_) store_ = std::make_unique<LeagueStore>(url);
-      }
-      work(*queue_, store_.get());
-    } catch (const std::runtime_error& e) {
-      // The database answering "no" (credentials, a missing database) will not change by waiting.
-      const std::string why = e.what();
-      for (const char* refusal :
-           {"password authentication failed", "no pg_hba.conf entry", "does not exist"})
-        if (why.find(refusal) != std::string::npos)
-          throw std::invalid_argument("the database refuses cell " + settings_.cell + ": " + why);
-      if (!paused_ && !connected_once_)
-        std::fprintf(stderr, "cell %s: cannot reach the database (%s); trying again\n",
-                     settings_.cell.c_str(), e.what());
-      else if (!paused_)
-        std::fprintf(stderr,
-                     "cell %s: lost the database (%s); paused: no new fixtures, finished results "
-                     "kept until it is back\n",
-                     settings_.cell.c_str(), e.what());
-      paused_ = true;
-      queue_.reset();
-      store_.reset();
-      return false;
-    }
-    if (paused_) std::fprintf(stderr, "cell %s: database back; going on\n", settings_.cell.c_str());
-    paused_ = false;
-    connected_once_ = true;
-    return true;
-  }
-
- private:
-  const CellSettings& settings_;
-  bool with_store_;
-  bool paused_ = false;
-  bool connected_once_ = false;
-  std::unique_ptr<FixtureQueue> queue_;
-  std::unique_ptr<LeagueStore> store_;
-};
-
 // The cell's second connection, on its own thread: hands finished results to the queue as soon
 // as they are known (kept while the database is away), renews the cell's leases, and touches the
 // health file. The games being played never wait on the database.
 class Keeper {
  public:
   explicit Keeper(const CellSettings& settings)
-      : settings_(settings), db_(settings, false), thread_([this](std::stop_token stop) {
+      : settings_(settings),
+        db_(settings.db_url, "cell " + settings.cell, settings.cell, false),
+        thread_([this](std::stop_token stop) {
           while (!stop.stop_requested()) {
             try {
               tick();
@@ -145,7 +98,7 @@ class Keeper {
   }
 
   const CellSettings& settings_;
-  Connection db_;
+  FleetConnection db_;
   std::mutex mutex_;
   std::deque<std::pair<std::string, FinishedFixture>> outbox_;
   std::string holding_;
@@ -182,7 +135,7 @@ class Cell {
   explicit Cell(const CellSettings& settings)
       : settings_(settings),
         fingerprint_(secret_fingerprint(settings.runner.secret_file)),
-        db_(settings, true),
+        db_(settings.db_url, "cell " + settings.cell, settings.cell, true),
         keeper_(settings) {}
 
   int run() {
@@ -203,7 +156,7 @@ class Cell {
         RoundVerdict verdict = RoundVerdict::Wait;
         try {
           if (!db_.run([&](FixtureQueue& queue, LeagueStore* store) {
-                leased = queue.lease(t, fingerprint_, settings_.batch, settings_.lease_s);
+                leased = queue.lease(t, fingerprint_, lease_count(t, *store), settings_.lease_s);
                 if (leased.empty()) verdict = queue_next_round(*store, queue, t, fingerprint_);
               })) {
             open = true;
@@ -263,6 +216,18 @@ class Cell {
     server_id_ = id;
   }
 
+  // A self-play run has only its lag of games queued at once: a cell leases no more than it
+  // plays at once, leaving the others to other cells.
+  int lease_count(const std::string& t, LeagueStore& store) {
+    auto format = formats_.find(t);
+    if (format == formats_.end()) {
+      auto spec = store.find_tournament(t);
+      format = formats_.emplace(t, spec ? spec->format : "").first;
+    }
+    return format->second == "selfplay" ? std::min(settings_.batch, settings_.runner.parallel)
+                                        : settings_.batch;
+  }
+
   // A cell serving every queued tournament leaves one it cannot play to the others and goes on.
   void refuse(const std::string& t, const std::string& why) {
     std::fprintf(stderr, "cell %s: skips tournament %s: %s\n", settings_.cell.c_str(), t.c_str(),
@@ -275,9 +240,11 @@ class Cell {
   std::optional<std::string> play(const std::string& t, const std::vector<int>& leased) {
     std::optional<TournamentSpec> spec;
     std::vector<Game> games;
-    while (!db_.run([&](FixtureQueue&, LeagueStore* store) {
+    std::map<std::string, std::string> snapshots;
+    while (!db_.run([&](FixtureQueue& queue, LeagueStore* store) {
       spec = store->find_tournament(t);
       games = store->games(t);
+      if (spec) snapshots = fetch_snapshots(queue, *spec, snapshot_cache());
     }))
       sleep_s(settings_.poll_s);
     if (!spec)
@@ -296,6 +263,7 @@ class Cell {
     local.add_games(t, games);
     RunnerSettings runner = settings_.runner;
     runner.progress = false;
+    runner.policy_files = snapshots;
     if (!server_id_.empty()) runner.servers = {server_id_};
     runner.on_game_done = [&](const Game& g) {
       keeper_.add(t, {g.index, g.match_id, g.home_score, g.reason, g.ticks, g.places});
@@ -316,9 +284,16 @@ class Cell {
     return std::nullopt;
   }
 
+  std::string snapshot_cache() const {
+    return settings_.snapshot_cache.empty()
+               ? settings_.runner.log_dir + "/fleet-snapshots-" + server_id_of(settings_.cell)
+               : settings_.snapshot_cache;
+  }
+
   const CellSettings& settings_;
+  std::map<std::string, std::string> formats_;  // tournament -> format, as leased
   std::string fingerprint_;
-  Connection db_;
+  FleetConnection db_;
   Keeper keeper_;
   std::unique_ptr<Process> server_;
   std::string server_id_;
@@ -337,10 +312,12 @@ RoundVerdict queue_next_round(LeagueStore& store, FixtureQueue& queue,
     }
     auto spec = store.find_tournament(tournament);
     if (!spec) throw std::invalid_argument("no tournament \"" + tournament + "\" to queue");
-    if (spec->format == "selfplay")
-      throw std::invalid_argument(
-          "self-play runs decide each game from earlier results on one "
-          "host (olympics-league selfplay); the fleet plays tournaments");
+    if (spec->format == "selfplay") {
+      // Its scheduler (olympics-league selfplay --fleet) queues each game once the results it
+      // depends on are stored, and marks the run finished; cells only play.
+      verdict = RoundVerdict::Wait;
+      return;
+    }
     auto games = store.games(tournament);
     // Games of a round a crash left unqueued are queued now; the round goes on.
     for (const auto& g : games)

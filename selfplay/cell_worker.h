@@ -3,7 +3,9 @@
 // work from the fleet's FixtureQueue in PostgreSQL. It leases a batch of fixtures, plays them as
 // the league plays games on one host (a TournamentRunner over its own server), hands each result
 // to the queue as soon as it is known, and renews its lease meanwhile. When the database is lost
-// it takes no new work, keeps its results and renews nothing, and goes on when it is back.
+// it takes no new work, keeps its results and renews nothing, and goes on when it is back. It
+// plays self-play runs' fixtures too (their scheduler, selfplay_fleet.h, queues them), and its
+// workers play snapshots from its own copies of the database's (fleet_snapshots.h).
 #pragma once
 
 #include <string>
@@ -26,6 +28,7 @@ struct CellSettings {
   std::string server_program;  // its program (olympics-server beside this one)
   int server_capacity = 0;     // its matches at once (0: --parallel; more leaves room for learners)
   std::string health_file;     // touched every second while the cell is well (an exec probe)
+  std::string snapshot_cache;  // where the cell keeps its copies of snapshots ("": in log_dir)
   RunnerSettings runner;       // how games are played inside the cell
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include "auth.h"
@@ -25,6 +26,9 @@ CREATE TABLE IF NOT EXISTS fleet_results (
   cell TEXT NOT NULL, home_score DOUBLE PRECISION NOT NULL, reason TEXT NOT NULL,
   ticks INTEGER NOT NULL, stored_at TIMESTAMPTZ NOT NULL DEFAULT now(),
   places TEXT NOT NULL DEFAULT '', PRIMARY KEY (tournament, idx), UNIQUE (fixture_id));
+CREATE TABLE IF NOT EXISTS fleet_snapshots (
+  tournament TEXT NOT NULL, policy TEXT NOT NULL, bytes BYTEA NOT NULL,
+  stored_at TIMESTAMPTZ NOT NULL DEFAULT now(), PRIMARY KEY (tournament, policy));
 )sql";
 // A ranked fixture's places (JSON array, '' for a two-team game): added since the first schema.
 constexpr const char* kPlacesColumn = "TEXT NOT NULL DEFAULT ''";
@@ -204,6 +208,39 @@ bool FixtureQueue::finished(const std::string& tournament) {
 
 void FixtureQueue::mark_finished(const std::string& tournament) {
   db_->query("UPDATE fleet_tournaments SET finished = true WHERE tournament = $1", {tournament});
+}
+
+void FixtureQueue::store_snapshot(const std::string& tournament, const std::string& policy,
+                                  const std::string& bytes) {
+  // bytea's hex input form, so that the bytes travel as text like every other value.
+  db_->query(
+      "INSERT INTO fleet_snapshots (tournament, policy, bytes) VALUES ($1, $2, $3::bytea) "
+      "ON CONFLICT (tournament, policy) DO NOTHING",
+      {tournament, policy,
+       "\\x" + hex(reinterpret_cast<const std::uint8_t*>(bytes.data()),
+                   static_cast<int>(bytes.size()))});
+}
+
+std::vector<std::string> FixtureQueue::snapshot_policies(const std::string& tournament) {
+  std::vector<std::string> out;
+  for (const auto& r :
+       db_->query("SELECT policy FROM fleet_snapshots WHERE tournament = $1 ORDER BY policy",
+                  {tournament}))
+    out.push_back(r[0]);
+  return out;
+}
+
+std::optional<std::string> FixtureQueue::snapshot(const std::string& tournament,
+                                                  const std::string& policy) {
+  auto rows = db_->query(
+      "SELECT encode(bytes, 'hex') FROM fleet_snapshots WHERE tournament = $1 AND policy = $2",
+      {tournament, policy});
+  if (rows.empty()) return std::nullopt;
+  const std::string& text = rows[0][0];
+  std::string bytes(text.size() / 2, '\0');
+  for (size_t i = 0; i < bytes.size(); ++i)
+    bytes[i] = static_cast<char>(std::stoi(text.substr(2 * i, 2), nullptr, 16));
+  return bytes;
 }
 
 bool FixtureQueue::alive() {

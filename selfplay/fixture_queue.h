@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,13 @@ class FixtureQueue {
   std::vector<std::string> active_tournaments();
   bool finished(const std::string& tournament);
   void mark_finished(const std::string& tournament);
+  // Snapshots (mlp:FILE entrants) travel through the database, so that a cell needs no shared
+  // folder: the scheduler stores each file's bytes once, when its entrant joins; a cell copies
+  // them to a cache of its own. Stored once per (tournament, policy): the first copy counts.
+  void store_snapshot(const std::string& tournament, const std::string& policy,
+                      const std::string& bytes);
+  std::vector<std::string> snapshot_policies(const std::string& tournament);
+  std::optional<std::string> snapshot(const std::string& tournament, const std::string& policy);
   // Whether the connection still answers (a cheap query).
   bool alive();
 

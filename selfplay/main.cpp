@@ -8,6 +8,8 @@
 //   olympics-league list  --db league.db
 //
 // run resumes a tournament of that name if the database has it (after a crash or kill -9).
+// Across machines (docs/deploy.md): run --fleet / selfplay --fleet queue the games in PostgreSQL
+// and `olympics-league cell` plays them on each host.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -18,11 +20,13 @@
 
 #include "cell_command.h"
 #include "fixture_queue.h"
+#include "fleet_snapshots.h"
 #include "heats.h"
 #include "leaderboard.h"
 #include "league_store.h"
 #include "matchmaking.h"
 #include "process.h"
+#include "selfplay_fleet.h"
 #include "tournament_runner.h"
 
 namespace {
@@ -187,10 +191,16 @@ int main(int argc, char** argv) {
     cmd->add_flag("--resume-as-stored", resume_as_stored,
                   "resume a run of this name as stored even if flags given differ");
   }
+  sp->add_flag("--fleet", fleet,
+               "schedule the run's games in --db (PostgreSQL) for cells to play (olympics-league "
+               "cell); this process stays as the run's scheduler until its last game is stored "
+               "(docs/deploy.md)");
 
   CellSettings cell;
   auto* cell_cmd = app.add_subcommand(
-      "cell", "play queued tournaments of a fleet on this cell's server (docs/deploy.md)");
+      "cell",
+      "play the queued tournaments and self-play runs of a fleet on this cell's server "
+      "(docs/deploy.md)");
   add_cell_options(*cell_cmd, cell);
 
   std::string svg;
@@ -259,8 +269,21 @@ int main(int argc, char** argv) {
           check_ranked_tournament(spec.mode, spec.format, static_cast<int>(spec.entrants.size()));
         store.create_tournament(spec);
       }
-      if (fleet) {
+      if (fleet && spec.format == "selfplay") {
+        if (!SelfplayOptions::from_json(spec.options).learner.empty())
+          throw std::invalid_argument(
+              "a live learner (--learner) plays on its own host's LCM, which a fleet's cells do "
+              "not share; run its self-play on that host without --fleet, or let the fleet play "
+              "its snapshots (--snapshots) without --learner");
+        SelfplayFleetSettings driver;
+        driver.db_url = db;
+        driver.fingerprint = secret_fingerprint(runner.secret_file);
+        driver.quiet = quiet;
+        drive_selfplay_fleet(spec, driver);
+        spec = *store.find_tournament(name);
+      } else if (fleet) {
         FixtureQueue queue(db, "queue");
+        upload_snapshots(queue, spec);  // cells play mlp:FILE entrants from the database
         const auto verdict =
             queue_next_round(store, queue, name, secret_fingerprint(runner.secret_file));
         std::printf(
@@ -269,19 +292,20 @@ int main(int argc, char** argv) {
             name.c_str(), queue.unfinished(name), db.c_str(),
             verdict == RoundVerdict::Finished ? " (finished)" : "", name.c_str());
         return 0;
-      }
-      runner.agent_program = olympics::program_beside_this_one("olympics-agent");
-      runner.progress = !quiet;
-      std::unique_ptr<Scheduler> scheduler;
-      if (spec.format == "selfplay") {
-        auto options = SelfplayOptions::from_json(spec.options);
-        runner.parallel = options.lag;  // decisions depend on it: keep the run's own
-        scheduler = std::make_unique<SelfplayScheduler>(options);
       } else {
-        scheduler = make_tournament_scheduler();
+        runner.agent_program = olympics::program_beside_this_one("olympics-agent");
+        runner.progress = !quiet;
+        std::unique_ptr<Scheduler> scheduler;
+        if (spec.format == "selfplay") {
+          auto options = SelfplayOptions::from_json(spec.options);
+          runner.parallel = options.lag;  // decisions depend on it: keep the run's own
+          scheduler = std::make_unique<SelfplayScheduler>(options);
+        } else {
+          scheduler = make_tournament_scheduler();
+        }
+        TournamentRunner(store, spec, runner, std::move(scheduler)).run();
+        spec = *store.find_tournament(name);
       }
-      TournamentRunner(store, spec, runner, std::move(scheduler)).run();
-      spec = *store.find_tournament(name);
     }
     auto t = store.find_tournament(name);
     if (!t) throw std::invalid_argument("no tournament \"" + name + "\" in " + db);

@@ -314,13 +314,16 @@ void TournamentRunner::start_workers(Game& g) {
   for (int team = 0; team < static_cast<int>(seated.size()); ++team) {
     const Entrant& e = spec_.entrants[seated[team]];
     if (e.is_live()) continue;  // a live learner joins by itself: assign_live()
+    const auto copy = settings_.policy_files.find(e.policy);
+    const std::string policy =
+        copy == settings_.policy_files.end() ? e.policy : "mlp:" + copy->second;
     std::vector<std::string> argv = {settings_.agent_program,
                                      "--match",
                                      g.match_id,
                                      "--slots",
                                      slots_argument(team_slots(f.slot_teams, team)),
                                      "--policy",
-                                     e.policy,
+                                     policy,
                                      "--policy-seed",
                                      std::to_string(e.seed),
                                      "--name",

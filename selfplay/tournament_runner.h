@@ -36,6 +36,9 @@ struct RunnerSettings {
   std::string secret_file;           // "" = $OLYMPICS_SECRET_FILE, or none; its workers get it too
   // Told each game's result once it is stored (a fleet's cell hands it on to the queue).
   std::function<void(const Game&)> on_game_done;
+  // Where this host reads an entrant's snapshot when not from its stored path (a fleet's cell
+  // plays its own copy of mlp:FILE): stored policy -> file.
+  std::map<std::string, std::string> policy_files;
 };
 
 // The slots of `team` from a match's slot-to-team mapping (match_created_t.slot_team), in slot

@@ -7,15 +7,21 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <csignal>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <regex>
 #include <set>
 #include <thread>
 
 #include "auth.h"
 #include "fixture_queue.h"
+#include "fleet_snapshots.h"
 #include "leaderboard.h"
 #include "league_store.h"
+#include "mlp_snapshot.h"
 #include "sql_database.h"
 #include "test_programs.h"
 
@@ -61,7 +67,7 @@ void queue_tournament(const std::string& db, const std::string& name, const std:
 
 std::unique_ptr<Process> cell(const std::string& db, const std::string& name,
                               const std::string& cell_name, const std::string& secret = "",
-                              double lease_s = 30) {
+                              double lease_s = 30, const std::vector<std::string>& extra = {}) {
   std::vector<std::string> argv = {program("olympics-league"),
                                    "cell",
                                    "--db",
@@ -82,6 +88,7 @@ std::unique_ptr<Process> cell(const std::string& db, const std::string& name,
                                    "--server-wait-s",
                                    "30"};
   if (!secret.empty()) argv.insert(argv.end(), {"--secret", secret});
+  argv.insert(argv.end(), extra.begin(), extra.end());
   return std::make_unique<Process>(argv, temp_dir() + "/" + cell_name + ".log");
 }
 
@@ -125,6 +132,29 @@ TEST(FleetQueue, LeasesAreDisjointExpireBackToTheQueueAndAResultIsStoredOnce) {
   }
   // One machine needs no queue: SQLite is refused with what to use instead.
   EXPECT_THROW(FixtureQueue(temp_dir() + "/league.db", "x"), std::invalid_argument);
+}
+
+// A tournament with a snapshot entrant queued for the fleet: the file's bytes are in the
+// database, and a cell's cache gets exactly those bytes, under its own path.
+TEST(FleetQueue, ASnapshotEntrantTravelsThroughTheDatabaseByteForByte) {
+  const std::string url = postgres_url();
+  if (url.empty()) GTEST_SKIP() << "set OLYMPICS_TEST_POSTGRES_URL (CI does)";
+  const std::string name = unique_name("snap"), dir = temp_dir();
+  const std::string file = dir + "/policy-v4.safetensors";
+  write_snapshot(file, 4);
+  queue_tournament(url, name, "", "", "round-robin", "zero,mlp:" + file);
+  auto read = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  FixtureQueue queue(url, "check");
+  ASSERT_EQ(queue.snapshot_policies(name), std::vector<std::string>{"mlp:" + file});
+  EXPECT_EQ(queue.snapshot(name, "mlp:" + file), read(file));
+  const auto spec = *selfplay::LeagueStore(url).find_tournament(name);
+  const auto local = selfplay::fetch_snapshots(queue, spec, dir + "/cache");
+  ASSERT_EQ(local.size(), 1u);
+  EXPECT_NE(local.at("mlp:" + file), file);
+  EXPECT_EQ(read(local.at("mlp:" + file)), read(file));
 }
 
 TEST(Fleet, TwoCellsPlayAQueuedTournamentToTheTableOfOneHost) {
@@ -283,6 +313,157 @@ TEST(Fleet, AFixtureForASportTheCellDoesNotHostIsRefusedByNameAndKept) {
       << refusals[0];
   // Back in the queue at once (not held until the lease runs out): another cell may lease them.
   EXPECT_EQ(queue.lease(name, "", 10, 30).size(), 6u);
+}
+
+// The self-play options both runs below share: PFSP of the latest snapshot over a window and two
+// bots, 12 games, decisions lagging 3 games (--parallel 3).
+std::vector<std::string> selfplay_argv(const std::string& db, const std::string& name,
+                                       const std::string& snapshots,
+                                       const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> argv = {program("olympics-league"),
+                                   "selfplay",
+                                   "--db",
+                                   db,
+                                   "--name",
+                                   name,
+                                   "--snapshots",
+                                   snapshots,
+                                   "--window",
+                                   "2",
+                                   "--bots",
+                                   "zero,random:4",
+                                   "--strategy",
+                                   "pfsp:hard",
+                                   "--bot-share",
+                                   "0.2",
+                                   "--matches",
+                                   "12",
+                                   "--parallel",
+                                   "3",
+                                   "--seed",
+                                   "9",
+                                   "--time-limit",
+                                   "4"};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  return argv;
+}
+
+// Polls `query` (one count) on the fleet's database until it reaches `at_least`.
+bool wait_for_count(sql::SqlDatabase& db, const std::string& query,
+                    const std::vector<std::string>& params, int at_least, double timeout_s = 120) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (std::stoi(db.query(query, params)[0][0]) >= at_least) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
+// Self-play over three cells: its scheduler (selfplay --fleet) queues each game once the results
+// it depends on are stored. The scheduler is killed with SIGKILL and started again, one cell is
+// killed holding a game, the snapshots' folder is gone once the run started (cells play the
+// copies the database holds): every game is stored once, and the games, their results and the
+// table are those of the same run on one host.
+TEST(Fleet, SelfplayOverThreeCellsDecidesAsOneHostThroughAKilledSchedulerAndCell) {
+  const std::string url = postgres_url();
+  if (url.empty()) GTEST_SKIP() << "set OLYMPICS_TEST_POSTGRES_URL (CI does)";
+  const std::string name = unique_name("selfplay"), dir = temp_dir();
+  const std::string snapshots = dir + "/snapshots", lcm = unique_lcm_url();
+  std::filesystem::create_directories(snapshots);
+  for (int v = 1; v <= 3; ++v)
+    write_snapshot(snapshots + "/policy-v" + std::to_string(v) + ".safetensors", v);
+
+  // The run on one host: one server, the league from SQLite.
+  Process server({program("olympics-server"), "serve", "--id", "solo", "--capacity", "3",
+                  "--lcm-url", lcm, "--results", dir + "/solo.db"},
+                 dir + "/solo.log");
+  auto one_argv = selfplay_argv(dir + "/one.db", "one", snapshots);
+  one_argv.insert(one_argv.end(), {"--lcm-url", lcm, "--log-dir", dir, "--quiet"});
+  Process one(one_argv, dir + "/one.log");
+  ASSERT_EQ(one.wait(180), 0) << one.output();
+
+  // The fleet: the scheduler and three cells of one game at a time each.
+  auto db = sql::open_sql_database(url);
+  FixtureQueue(url, "check");  // the queue's tables, for the polls below
+  auto scheduler = std::make_unique<Process>(
+      selfplay_argv(url, name, snapshots, {"--fleet", "--quiet"}), dir + "/scheduler1.log");
+  ASSERT_TRUE(wait_for_count(*db, "SELECT count(*) FROM fleet_snapshots WHERE tournament = $1",
+                             {name}, 3, 60))
+      << scheduler->output();
+  // Its snapshots are stored: the learner's folder is of no use to the cells from now on.
+  std::filesystem::rename(snapshots, dir + "/snapshots-elsewhere");
+  std::vector<std::unique_ptr<Process>> cells;
+  for (const char* c : {"sp-1", "sp-2", "sp-3"})
+    cells.push_back(cell(url, name, c, "", 3, {"--parallel", "1"}));
+
+  const std::string done = "SELECT count(*) FROM fleet_results WHERE tournament = $1";
+  ASSERT_TRUE(wait_for_count(*db, done, {name}, 3)) << scheduler->output();
+  scheduler->signal(SIGKILL);
+  scheduler->wait(10);
+  scheduler = std::make_unique<Process>(selfplay_argv(url, name, snapshots, {"--fleet"}),
+                                        dir + "/scheduler2.log");
+  // sp-2 dies holding a game it leased (starting or playing it).
+  ASSERT_TRUE(wait_for_count(*db,
+                             "SELECT count(*) FROM games g JOIN fleet_queue q ON q.tournament = "
+                             "g.tournament AND q.idx = g.idx WHERE g.tournament = $1 AND "
+                             "q.cell = 'sp-2' AND q.state = 'leased'",
+                             {name}, 1))
+      << cells[1]->output();
+  const auto held = db->query(
+      "SELECT idx FROM fleet_queue WHERE tournament = $1 AND cell = 'sp-2' AND state = 'leased'",
+      {name});
+  cells[1]->signal(SIGKILL);
+  cells[1]->wait(10);
+
+  ASSERT_EQ(scheduler->wait(240), 0) << scheduler->output();
+  EXPECT_NE(scheduler->output().find("resuming " + name), std::string::npos) << scheduler->output();
+  for (int c : {0, 2}) EXPECT_EQ(cells[c]->wait(60), 0) << cells[c]->output();
+
+  // Every game stored exactly once, the killed cell's game by another cell.
+  EXPECT_EQ(db->query("SELECT count(*), count(DISTINCT idx) FROM fleet_results WHERE "
+                      "tournament = $1",
+                      {name})[0],
+            (sql::SqlDatabase::Row{"12", "12"}));
+  for (const auto& row : held)
+    EXPECT_NE(db->query("SELECT cell FROM fleet_results WHERE tournament = $1 AND idx = $2",
+                        {name, row[0]})[0][0],
+              "sp-2")
+        << "game " << row[0] << " was sp-2's when it was killed";
+  EXPECT_FALSE(held.empty()) << "sp-2 held no game when it was killed";
+
+  selfplay::LeagueStore single(dir + "/one.db"), fleet(url);
+  auto ga = single.games("one"), gb = fleet.games(name);
+  ASSERT_EQ(ga.size(), 12u);
+  ASSERT_EQ(gb.size(), 12u);
+  auto sa = *single.find_tournament("one"), sb = *fleet.find_tournament(name);
+  std::set<std::string> cells_that_played;
+  for (size_t i = 0; i < ga.size(); ++i) {
+    EXPECT_EQ(sa.entrants[ga[i].home].name, sb.entrants[gb[i].home].name) << "game " << i;
+    EXPECT_EQ(sa.entrants[ga[i].away].name, sb.entrants[gb[i].away].name) << "game " << i;
+    EXPECT_EQ(ga[i].home_score, gb[i].home_score) << "game " << i;
+    EXPECT_EQ(ga[i].ticks, gb[i].ticks) << "game " << i;
+    cells_that_played.insert(gb[i].server_id);
+  }
+  EXPECT_GE(cells_that_played.size(), 2u);
+  auto ta = selfplay::compute_leaderboard(sa, ga), tb = selfplay::compute_leaderboard(sb, gb);
+  ASSERT_EQ(ta.rows.size(), tb.rows.size());
+  for (size_t i = 0; i < ta.rows.size(); ++i) {
+    EXPECT_EQ(ta.rows[i].name, tb.rows[i].name);
+    EXPECT_EQ(ta.rows[i].skill.mu, tb.rows[i].skill.mu);  // bit for bit
+  }
+}
+
+// A live learner plays on its own host's LCM, which cells do not share: refused with what to do.
+TEST(Fleet, SelfplayWithALiveLearnerIsRefusedWithWhatToDo) {
+  const std::string url = postgres_url();
+  if (url.empty()) GTEST_SKIP() << "set OLYMPICS_TEST_POSTGRES_URL (CI does)";
+  auto argv = selfplay_argv(url, unique_name("live"), temp_dir() + "/none");
+  argv.insert(argv.end(), {"--fleet", "--learner", "alice"});
+  Process refused(argv, temp_dir() + "/live.log");
+  EXPECT_EQ(refused.wait(30), 2);
+  EXPECT_NE(refused.output().find("a live learner (--learner) plays on its own host's LCM"),
+            std::string::npos)
+      << refused.output();
 }
 
 }  // namespace
