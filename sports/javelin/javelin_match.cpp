@@ -6,6 +6,7 @@
 #include "athletics/competition.h"
 #include "core/humanoid_assets.h"
 #include "core/state_hash.h"
+#include "framework/jittered_start.h"
 #include "javelin/javelin_rewards.h"
 
 namespace olympics::sports::javelin {
@@ -74,7 +75,9 @@ Eigen::Quaterniond JavelinMatch::default_attitude() const {
 void JavelinMatch::begin_attempt(int slot) {
   Athlete& a = athletes_[slot];
   core::Humanoid& h = player(slot);
-  if (tick() > 0) reset_player(slot, start_mark(slot));
+  // On its mark, moved and turned a little by the match's random stream (so that seeds differ).
+  const core::RootPlacement mark = start_mark(slot);
+  reset_player(slot, jittered_start(mark.position.head<2>(), mark.yaw, rng()));
   a.javelin->release();
   a.javelin->place(a.hand.cord_point(h), default_attitude());
   a.javelin->grip(h.ode_body(a.hand.palm()), a.hand.geoms(h));
