@@ -56,19 +56,25 @@ double score(const Throw& t) {
 // Seeds the search never saw (it tuned on 1-3): the baseline's throws are valid.
 TEST(ScriptedJavelin, MakesValidThrowsTipFirstIntoTheSector) {
   int valid = 0, n = 0;
+  double speed = 0, angle = 0, marks = 0;
   std::map<std::string, int> endings;
   for (std::uint64_t seed = 11; seed <= 30; ++seed, ++n) {
     const Throw t = throw_once(seed);
     ASSERT_FALSE(t.decision.is_null()) << seed;
+    ASSERT_FALSE(t.release.is_null()) << seed;
+    speed += t.release["speed"].get<double>(), angle += t.release["angle"].get<double>();
     if (t.decision["call"] == "mark") {
       ++valid;
       EXPECT_GT(t.decision["mark"].get<double>(), 0.5) << seed;
+      marks += t.decision["mark"].get<double>();
       ++endings["mark"];
     } else {
       ++endings[t.decision["reason"].get<std::string>()];
     }
   }
-  std::printf("valid %d of %d: %s\n", valid, n, nlohmann::json(endings).dump().c_str());
+  std::printf("valid %d of %d, mean mark %.2f m, mean release %.2f m/s at %.1f degrees: %s\n",
+              valid, n, valid ? marks / valid : 0.0, speed / n, angle / n,
+              nlohmann::json(endings).dump().c_str());
   EXPECT_GE(valid, 10);
 }
 
