@@ -126,3 +126,33 @@ TEST(ScriptedJavelinSearch, DISABLED_CrossEntropy) {
 
 }  // namespace
 }  // namespace olympics::sports::javelin
+
+namespace olympics::sports::javelin {
+namespace {
+
+// The baseline under other settings (run by hand): without the air, and in paper mode.
+TEST(ScriptedJavelinProbe, DISABLED_Variants) {
+  for (const nlohmann::json& settings :
+       {nlohmann::json{
+            {"rules", "official"}, {"run_up", 2.0}, {"attempts", 1}, {"aerodynamics", "none"}},
+        nlohmann::json{{"rules", "official"}, {"run_up", 2.0}, {"attempts", 1}},
+        nlohmann::json::object()}) {
+    std::map<std::string, int> endings;
+    double marks = 0;
+    for (std::uint64_t seed = 11; seed <= 30; ++seed) {
+      const Throw t = throw_once(seed, {}, settings);
+      const std::string e = t.decision.is_null() ? "none"
+                            : t.decision["call"] == "mark"
+                                ? "mark"
+                                : t.decision["reason"].get<std::string>();
+      ++endings[e];
+      if (e == "mark") marks += t.decision["mark"].get<double>();
+      if (seed == 11) std::printf("release %s\n", t.release.dump().c_str());
+    }
+    std::printf("%s: %s mean mark %.2f\n", settings.dump().c_str(),
+                nlohmann::json(endings).dump().c_str(), marks / std::max(1, endings["mark"]));
+  }
+}
+
+}  // namespace
+}  // namespace olympics::sports::javelin
