@@ -4,17 +4,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "control/minimum_jerk.h"
 #include "smplx_observation.h"
 
 namespace olympics::client {
 namespace {
 
 using namespace smplx;
-
-double smooth(double s) {
-  s = std::clamp(s, 0.0, 1.0);
-  return s * s * s * (10 - 15 * s + 6 * s * s);
-}
 
 void set_arm(std::span<float> a, const ArmTargets& targets, double share) {
   const int joints[] = {kRShoulder, kRElbow, kRWrist};
@@ -43,7 +39,7 @@ void ScriptedJavelinPolicy::act(std::span<const float> o, std::span<float> a) {
   const double t = tick_ * control_dt_;
   const int swing_tick = static_cast<int>(std::lround(throw_.swing_s / control_dt_));
   if (tick_ < swing_tick)
-    set_arm(a, throw_.hold, smooth(t / 0.4));
+    set_arm(a, throw_.hold, control::minimum_jerk(t / 0.4));
   else
     set_arm(a, throw_.swing, 1.0);
   if (tick_ < swing_tick + throw_.release_ticks)

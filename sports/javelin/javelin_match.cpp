@@ -174,13 +174,7 @@ void JavelinMatch::settle_tick() {
     set_reward(slot, javelin_reward_terms(r));
     if (a.decided) {
       a.series.record(*a.decided);
-      nlohmann::json e = referee_event(a.decided->valid ? "mark" : "foul", time(), slot);
-      e["attempt"] = a.series.taken();
-      if (a.decided->valid)
-        e["mark"] = a.decided->mark;
-      else
-        e["reason"] = a.decided->reason;
-      log(std::move(e));
+      log(athletics::attempt_call(*a.decided, time(), slot, a.series.taken()));
       a.decided.reset();
       if (!a.series.done()) begin_attempt(slot);
     }
@@ -193,12 +187,8 @@ void JavelinMatch::settle_tick() {
 
 void JavelinMatch::finish() {
   std::vector<athletics::HorizontalSeries> series;
-  std::vector<float> best;
-  for (const auto& a : athletes_) {
-    series.push_back(a.series);
-    best.push_back(static_cast<float>(a.series.best()));
-  }
-  athletics::end_competition(outcome_, athletics::places(series), best, "series_complete");
+  for (const auto& a : athletes_) series.push_back(a.series);
+  athletics::end_horizontal_competition(outcome_, series);
 }
 
 void JavelinMatch::on_time_limit() {
