@@ -78,6 +78,26 @@ TEST(ScriptedJavelin, MakesValidThrowsTipFirstIntoTheSector) {
   EXPECT_GE(valid, 10);
 }
 
+// The official series of three: the thrower starts again with each attempt.
+TEST(ScriptedJavelin, ThrowsEachAttemptOfASeries) {
+  auto m =
+      sport_or_throw("javelin").create({"solo", 12, 0.0, {{"rules", "official"}, {"run_up", 2.0}}});
+  client::ScriptedJavelinPolicy thrower;
+  thrower.start({"javelin", "solo", 1.0 / 30,
+                 client::ObservationLayout::from_blocks(m->layout().observation),
+                 m->action_size()});
+  std::vector<float> obs(m->obs_size()), act(m->action_size());
+  int marks = 0;
+  for (int tick = 0; tick < 60 * 30 && !m->outcome().match_over; ++tick) {
+    m->observe(0, obs);
+    thrower.act(obs, act);
+    m->step({std::span<const float>(act)});
+    for (const auto& e : m->outcome().info["events"]) marks += e["call"] == "mark";
+  }
+  EXPECT_EQ(marks, 3);
+  EXPECT_EQ(m->outcome().reason, "series_complete");
+}
+
 // The search that found the baseline's poses (run by hand: --gtest_also_run_disabled_tests;
 // ITER=n iterations of 150 candidates on seeds 1-3).
 TEST(ScriptedJavelinSearch, DISABLED_CrossEntropy) {
