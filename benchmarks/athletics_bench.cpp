@@ -1,10 +1,12 @@
 #include "athletics_bench.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 
 #include "bench_support.h"
 #include "core/humanoid_assets.h"
+#include "javelin_bench.h"
 
 namespace olympics::bench {
 namespace {
@@ -75,34 +77,48 @@ nlohmann::json run_athletics_bench(const AthleticsBenchOptions& o) {
   const auto seeds = episode_seeds(o.seeds, o.episodes);
   nlohmann::json report = {
       {"seeds", o.seeds.empty() ? "1-" + std::to_string(o.episodes) : o.seeds}};
+  auto wanted = [&o](const std::string& event) {
+    return std::find(o.events.begin(), o.events.end(), event) != o.events.end();
+  };
   for (const auto& policy : o.policies) {
-    report["long_jump"][policy] = long_jumps(policy, seeds);
-    report["high_jump"][policy] = high_jumps(policy, seeds);
+    if (wanted("long_jump")) report["long_jump"][policy] = long_jumps(policy, seeds);
+    if (wanted("high_jump")) report["high_jump"][policy] = high_jumps(policy, seeds);
+    if (wanted("javelin")) report["javelin"][policy] = javelin_throws(policy, seeds);
   }
+  if (wanted("javelin")) report["javelin_flight"] = javelin_flight(seeds);
   if (o.speed) {
     const core::ModelSpec& smpl = core::load_humanoid(core::HumanoidKind::Smpl);
     for (const char* sport : {"long_jump", "high_jump"})
-      report["speed_competition_8"][sport] =
-          speed_vs_bare(sport, smpl, o.seconds, o.repeats, 45, "competition_8");
+      if (wanted(sport))
+        report["speed_competition_8"][sport] =
+            speed_vs_bare(sport, smpl, o.seconds, o.repeats, 45, "competition_8");
+    // The javelin's SMPL-X athletes, over the first 15 ticks (the javelins still held).
+    if (wanted("javelin"))
+      report["speed_competition_8"]["javelin"] =
+          speed_vs_bare("javelin", core::load_humanoid(core::HumanoidKind::SmplX), o.seconds,
+                        o.repeats, 15, "competition_8");
   }
   return report;
 }
 
 void print_athletics_report(const nlohmann::json& r) {
   std::printf("seeds %s\n", r["seeds"].get<std::string>().c_str());
-  std::printf("long jump (official, one attempt):\n");
-  for (const auto& [policy, v] : r["long_jump"].items())
+  static const nlohmann::json kNone = nlohmann::json::object();  // an event not measured
+  if (r.contains("long_jump")) std::printf("long jump (official, one attempt):\n");
+  for (const auto& [policy, v] : (r.contains("long_jump") ? r["long_jump"] : kNone).items())
     std::printf("  %-8s valid %.2f [%.2f, %.2f]  fouls %.2f [%.2f, %.2f]  mean mark %.2f m  %s\n",
                 policy.c_str(), v["valid_rate"].get<double>(), v["valid_ci95"][0].get<double>(),
                 v["valid_ci95"][1].get<double>(), v["foul_rate"].get<double>(),
                 v["foul_ci95"][0].get<double>(), v["foul_ci95"][1].get<double>(),
                 v["mean_mark_m"].get<double>(), v["endings"].dump().c_str());
-  std::printf("high jump (paper, one try): leap-over rate per bar height\n");
-  for (const auto& [policy, heights] : r["high_jump"].items())
+  if (r.contains("high_jump"))
+    std::printf("high jump (paper, one try): leap-over rate per bar height\n");
+  for (const auto& [policy, heights] : (r.contains("high_jump") ? r["high_jump"] : kNone).items())
     for (const auto& [h, v] : heights.items())
       std::printf("  %-8s %s m  %.2f [%.2f, %.2f]  %s\n", policy.c_str(), h.c_str(),
                   v["leap_over_rate"].get<double>(), v["leap_over_ci95"][0].get<double>(),
                   v["leap_over_ci95"][1].get<double>(), v["endings"].dump().c_str());
+  print_javelin_report(r);
   if (!r.contains("speed_competition_8")) return;
   for (const auto& [sport, v] : r["speed_competition_8"].items())
     std::printf(

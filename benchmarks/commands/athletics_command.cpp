@@ -1,19 +1,24 @@
 // olympics-bench athletics [--json] [--episodes N | --seeds A-B,..] [--policies P,..]
-//                          [--no-speed] [--seconds S] [--repeats R]
+//                          [--events E,..] [--no-speed] [--seconds S] [--repeats R]
 #include "athletics_bench.h"
 #include "bench_command.h"
 
 namespace olympics::bench {
 
 BenchCommand athletics_command(CLI::App& app) {
-  BenchCommand c(app, "athletics",
-                 "long jump marks and fouls, high-jump leap-over rate per height, ticks/s");
+  BenchCommand c(
+      app, "athletics",
+      "long jump marks and fouls, high-jump leap-over rate per height, javelin valid rate and "
+      "mark, ticks/s");
   auto o = std::make_shared<AthleticsBenchOptions>();
   auto& cli = c.cli();
   cli.add_option("--episodes", o->episodes, "episodes per policy, event and height (seeds 1..N)")
       ->check(CLI::PositiveNumber);
   add_seeds_option(cli, o->seeds, "athletics");
   cli.add_option("--policies", o->policies, "policies (comma-separated)")->delimiter(',');
+  cli.add_option("--events", o->events, "events (comma-separated): long_jump, high_jump, javelin")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"long_jump", "high_jump", "javelin"}));
   cli.add_flag("--no-speed{false}", o->speed, "skip the competition_8 ticks/s measurement");
   cli.add_option("--seconds", o->seconds, "wall seconds per speed measurement")
       ->check(CLI::PositiveNumber);

@@ -5,18 +5,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "control/minimum_jerk.h"
 #include "smplx_observation.h"
 
 namespace olympics::client {
 namespace {
 
 using namespace smplx;
-
-// 0 to 1 over [0, 1] with zero velocity and acceleration at both ends (minimum jerk).
-double smooth(double s) {
-  s = std::clamp(s, 0.0, 1.0);
-  return s * s * s * (10 - 15 * s + 6 * s * s);
-}
 
 // One arm's pose: turned `out` from the aim's bearing (outward positive), `elevation` above the
 // horizontal, the forearm rolled by `roll` (palm up near pi), elbow and fingers bent up.
@@ -25,7 +20,7 @@ struct ArmPose {
 };
 
 ArmPose blend(const ArmPose& a, const ArmPose& b, double s) {
-  s = smooth(s);
+  s = control::minimum_jerk(s);
   auto mix = [s](double x, double y) { return x + s * (y - x); };
   return {mix(a.out, b.out),     mix(a.elevation, b.elevation), mix(a.roll, b.roll),
           mix(a.elbow, b.elbow), mix(a.wrist, b.wrist),         mix(a.curl, b.curl)};

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "framework/referee_events.h"
+
 namespace olympics::sports::athletics {
 
 ModeTable field_event_modes(const std::string& sport, const std::string& what) {
@@ -25,6 +27,22 @@ void end_competition(TickOutcome& outcome, const std::vector<int>& places,
   if (places.size() > 1 && firsts == 1)
     winner = static_cast<int>(std::find(places.begin(), places.end(), 1) - places.begin());
   outcome.end(why, winner);
+}
+
+void end_horizontal_competition(TickOutcome& outcome, const std::vector<HorizontalSeries>& series) {
+  std::vector<float> best;
+  for (const auto& s : series) best.push_back(static_cast<float>(s.best()));
+  end_competition(outcome, places(series), best, "series_complete");
+}
+
+nlohmann::json attempt_call(const AttemptResult& result, double t, int slot, int attempt) {
+  nlohmann::json e = referee_event(result.valid ? "mark" : "foul", t, slot);
+  e["attempt"] = attempt;
+  if (result.valid)
+    e["mark"] = result.mark;
+  else
+    e["reason"] = result.reason;
+  return e;
 }
 
 }  // namespace olympics::sports::athletics

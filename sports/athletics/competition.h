@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "athletics/attempt_series.h"
 #include "sport.h"
 
 namespace olympics::sports::athletics {
@@ -19,5 +20,13 @@ ModeTable field_event_modes(const std::string& sport, const std::string& what);
 // for ties); the winner is the one athlete in first place, if only one is.
 void end_competition(TickOutcome& outcome, const std::vector<int>& places,
                      const std::vector<float>& scores, const std::string& why);
+
+// The same when every horizontal series (long jump, throws) is complete: scores the best marks,
+// places by TR 25.22, reason series_complete.
+void end_horizontal_competition(TickOutcome& outcome, const std::vector<HorizontalSeries>& series);
+
+// The call for a decided attempt of a horizontal event at match time `t`: "mark" with its mark,
+// or "foul" with its reason, and which attempt it was.
+nlohmann::json attempt_call(const AttemptResult& result, double t, int slot, int attempt);
 
 }  // namespace olympics::sports::athletics

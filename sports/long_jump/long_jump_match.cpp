@@ -119,13 +119,7 @@ void LongJumpMatch::settle_tick() {
       r.landed_this_tick = a.decided->valid;  // r_l: the mark by the rules in force
       r.mark = a.decided->mark;
       a.series.record(*a.decided);
-      nlohmann::json e = referee_event(a.decided->valid ? "mark" : "foul", time(), slot);
-      e["attempt"] = a.series.taken();
-      if (a.decided->valid)
-        e["mark"] = a.decided->mark;
-      else
-        e["reason"] = a.decided->reason;
-      log(std::move(e));
+      log(athletics::attempt_call(*a.decided, time(), slot, a.series.taken()));
       a.decided.reset();
       if (!a.series.done()) {  // the next attempt from the start mark
         reset_player(slot, start_mark(slot));
@@ -145,12 +139,8 @@ void LongJumpMatch::settle_tick() {
 
 void LongJumpMatch::finish() {
   std::vector<athletics::HorizontalSeries> series;
-  std::vector<float> best;
-  for (const auto& a : athletes_) {
-    series.push_back(a.series);
-    best.push_back(static_cast<float>(a.series.best()));
-  }
-  athletics::end_competition(outcome_, athletics::places(series), best, "series_complete");
+  for (const auto& a : athletes_) series.push_back(a.series);
+  athletics::end_horizontal_competition(outcome_, series);
 }
 
 void LongJumpMatch::on_time_limit() {

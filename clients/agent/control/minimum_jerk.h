@@ -1,0 +1,14 @@
+// A blend for scripted motions: 0 to 1 over [0, 1] with zero velocity and acceleration at both
+// ends (the minimum-jerk profile), clamped outside it.
+#pragma once
+
+#include <algorithm>
+
+namespace olympics::client::control {
+
+inline double minimum_jerk(double s) {
+  s = std::clamp(s, 0.0, 1.0);
+  return s * s * s * (10 - 15 * s + 6 * s * s);
+}
+
+}  // namespace olympics::client::control
