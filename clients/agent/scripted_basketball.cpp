@@ -100,6 +100,15 @@ FreeThrowAim ScriptedBasketballPolicy::aim_for(std::span<const float> o) const {
   return aim;
 }
 
+// The swing's turn that brings the predicted release speed to the solution's (see FreeThrowShot).
+double ScriptedBasketballPolicy::release_trim(std::span<const float> o) const {
+  const Eigen::Vector3d v = vec3(o, ball_velocity_);  // heading frame: z is up
+  const double predicted =
+      shot_.trim_base + shot_.trim_vh * v.head<2>().norm() + shot_.trim_vz * v.z();
+  return std::clamp((aim_.launch_speed - predicted) / shot_.trim_gain, shot_.trim_min,
+                    shot_.trim_max);
+}
+
 void ScriptedBasketballPolicy::start(const MatchInfo& match) {
   if (match.sport != "basketball" || match.mode != "free_throw")
     throw std::invalid_argument(
@@ -108,6 +117,9 @@ void ScriptedBasketballPolicy::start(const MatchInfo& match) {
         match.sport + " " + match.mode);
   ball_ = match.observation.offset("ball", "position");
   rim_ = match.observation.offset("rim", "centre");
+  ball_velocity_ = match.observation.offset("ball", "velocity");
+  swing_tick_ = 0;
+  trim_ = 0;
   aim_ = {};
   aimed_ = false;
   control_dt_ = match.control_dt;
@@ -141,6 +153,8 @@ void ScriptedBasketballPolicy::act(std::span<const float> o, std::span<float> a)
     pose.elevation = aim_.elevation;
     pose.elbow = shot_.shot_elbow;
     pose.curl = shot_.shot_curl;
+    if (++swing_tick_ == shot_.trim_tick) trim_ = release_trim(o);
+    pose.elevation += trim_;
   }
   stand(o, a, shot_);
   set_arm(a, false, bearing, pose);

@@ -56,6 +56,17 @@ struct FreeThrowShot {
   double fixed_elevation = NAN;  // set: swing there whatever the aim says (measuring `swing`)
   double aim_offset = 0.008;     // rad added to the rim's bearing (the swing pulls aside)
   double shot_elbow = 0.492;     // rad: the elbows in the swing
+  // The release trimmed by feedback: the swing lifts the ball off the palms in its third control
+  // tick (the fingers strike it a second time), and that tick's arm elevation changes how fast it
+  // leaves, smoothly and without changing its direction. So from the ball's velocity observed
+  // after the swing's second tick (`trim_tick` - 1) the shooter predicts its release speed
+  // (`trim_base` + `trim_vh` horizontal speed + `trim_vz` vertical) and turns the swing's target
+  // by the difference from the solution's speed over `trim_gain` (m/s per rad), within
+  // [`trim_min`, `trim_max`]. Fitted on tuning seeds 1-120 (docs/basketball.md, "Trimming the
+  // release"). `trim_tick` 0: no trim.
+  int trim_tick = 3;
+  double trim_base = -3.725, trim_vh = 1.133, trim_vz = 1.08, trim_gain = 0.536;
+  double trim_min = -0.8, trim_max = 0.4;
   // Standing balance: ankle pitch per m of the root ahead of the ankles and per m/s, its bias
   // (the arms and ball ahead of the body), hip pitch per m.
   double ankle_p = 1.0, ankle_d = 2.0, ankle_bias = 0.0, hip_p = 1.0;
@@ -68,15 +79,21 @@ class ScriptedBasketballPolicy : public Policy {
   void act(std::span<const float> observation, std::span<float> action) override;
   // This throw's aim (set at the swing's start).
   const FreeThrowAim& aim() const { return aim_; }
+  // rad the release trim turned the swing by (0 before it, or without it).
+  double trim() const { return trim_; }
 
  private:
   FreeThrowAim aim_for(std::span<const float> observation) const;
+  double release_trim(std::span<const float> observation) const;
 
   FreeThrowShot shot_;
   FreeThrowAim aim_;
   bool aimed_ = false;
   int ball_ = 0;
   int rim_ = 0;
+  int ball_velocity_ = 0;
+  int swing_tick_ = 0;  // control ticks since the swing began (1: its first)
+  double trim_ = 0;
   double control_dt_ = 0;
   double clock_s_ = 0;
 };
