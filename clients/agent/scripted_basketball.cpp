@@ -12,6 +12,9 @@ namespace {
 
 using namespace smplx;
 
+// The palm boxes' centres in the wrist bodies' frames (HUMANOID-SMPLX.md).
+const Eigen::Vector3d kLeftPalm(-.0031, .0523, -.0013), kRightPalm(-.0029, -.0537, -.0044);
+
 // 0 to 1 over [0, 1] with zero velocity and acceleration at both ends (minimum jerk).
 double smooth(double s) {
   s = std::clamp(s, 0.0, 1.0);
@@ -102,9 +105,18 @@ FreeThrowAim ScriptedBasketballPolicy::aim_for(std::span<const float> o) const {
 
 // The swing's turn that brings the predicted release speed to the solution's (see FreeThrowShot).
 double ScriptedBasketballPolicy::release_trim(std::span<const float> o) const {
-  const Eigen::Vector3d v = vec3(o, ball_velocity_);  // heading frame: z is up
-  const double predicted =
-      shot_.trim_base + shot_.trim_vh * v.head<2>().norm() + shot_.trim_vz * v.z();
+  // Heading frame, relative to the root: z is up.
+  const Eigen::Vector3d ball = vec3(o, ball_), v = vec3(o, ball_velocity_), rim = vec3(o, rim_);
+  const Eigen::Vector3d palms =
+      0.5 * (body_position(o, kLWrist) + body_rotation(o, kLWrist) * kLeftPalm +
+             body_position(o, kRWrist) + body_rotation(o, kRWrist) * kRightPalm);
+  const Eigen::Vector3d towards =
+      Eigen::Vector3d(rim.x() - ball.x(), rim.y() - ball.y(), 0).normalized();
+  const Eigen::Vector3d from_palms = ball - palms;
+  const std::array<double, 4> x = {v.head<2>().norm(), v.z(), from_palms.dot(towards),
+                                   from_palms.z()};
+  double predicted = shot_.trim_base;
+  for (size_t i = 0; i < x.size(); ++i) predicted += shot_.trim_coef[i] * x[i];
   return std::clamp((aim_.launch_speed - predicted) / shot_.trim_gain, shot_.trim_min,
                     shot_.trim_max);
 }
@@ -153,8 +165,12 @@ void ScriptedBasketballPolicy::act(std::span<const float> o, std::span<float> a)
     pose.elevation = aim_.elevation;
     pose.elbow = shot_.shot_elbow;
     pose.curl = shot_.shot_curl;
-    if (++swing_tick_ == shot_.trim_tick) trim_ = release_trim(o);
-    pose.elevation += trim_;
+    if (shot_.trim_tick > 0) {
+      pose.elevation -= shot_.trim_swing;
+      if (++swing_tick_ >= shot_.trim_tick) pose.curl = shot_.trim_curl;
+      if (swing_tick_ == shot_.trim_tick) trim_ = release_trim(o);
+      pose.elevation += trim_;
+    }
   }
   stand(o, a, shot_);
   set_arm(a, false, bearing, pose);
