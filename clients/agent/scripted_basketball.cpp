@@ -165,7 +165,7 @@ void ScriptedBasketballPolicy::act(std::span<const float> o, std::span<float> a)
     pose.elevation = aim_.elevation;
     pose.elbow = shot_.shot_elbow;
     pose.curl = shot_.shot_curl;
-    if (shot_.trim_tick > 0) {
+    if (shot_.trim_tick > 0 && aim_.elevation >= shot_.trim_from_elevation) {
       pose.elevation -= shot_.trim_swing;
       if (++swing_tick_ >= shot_.trim_tick) pose.curl = shot_.trim_curl;
       if (swing_tick_ == shot_.trim_tick) trim_ = release_trim(o);

@@ -110,10 +110,10 @@ TEST(ScriptedFreeThrow, AimsByTheBallisticSolution) {
 }
 
 TEST(ScriptedFreeThrow, MakesFreeThrowsFromNearerLinesWhereTheSearchedSwingCannot) {
-  // Seeds 1..100 from 3.6 and 4.0 m (the line 1 and 0.6 m nearer). Measured: 11 of the 200 made
-  // by the aimed swing with its release trimmed (16 untrimmed, before issue 30: the trim was
-  // fitted from the rule's line), 4 by the search's swing (2.596 rad, untrimmed) kept whatever
-  // the line (with the livelier ball of before issue 33: 8 and 1, untrimmed).
+  // Seeds 1..100 from 3.6 and 4.0 m (the line 1 and 0.6 m nearer). Measured: 18 of the 200 made
+  // by the aimed swing (from 4.0 m with its release trimmed, 3.6 m untrimmed: 11 and 7; 16 in all
+  // before issue 30; trimmed from 3.6 m too, 11), 4 by the search's swing (2.596 rad, untrimmed)
+  // kept whatever the line (with the livelier ball of before issue 33: 8 and 1, untrimmed).
   client::FreeThrowShot kept;
   kept.fixed_elevation = 2.596;
   kept.trim_tick = 0;  // the search's swing as it was: untrimmed
