@@ -70,6 +70,7 @@ nlohmann::json scripted_throws(const std::vector<std::uint64_t>& seeds, bool per
       t["ball_speed"] = speed;
       t["solution_speed"] = wanted;
       t["ball_elevation_deg"] = std::atan2(v.z(), v.head<2>().norm()) * 180 / M_PI;
+      t["release_trim_rad"] = shooter.trim();
     }
     const std::string reason = m->outcome().reason;
     t["reason"] = reason;

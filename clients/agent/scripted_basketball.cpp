@@ -13,6 +13,9 @@ namespace {
 
 using namespace smplx;
 
+// The palm boxes' centres in the wrist bodies' frames (HUMANOID-SMPLX.md).
+const Eigen::Vector3d kLeftPalm(-.0031, .0523, -.0013), kRightPalm(-.0029, -.0537, -.0044);
+
 // One arm's pose: turned `out` from the aim's bearing (outward positive), `elevation` above the
 // horizontal, the forearm rolled by `roll` (palm up near pi), elbow and fingers bent up.
 struct ArmPose {
@@ -95,6 +98,24 @@ FreeThrowAim ScriptedBasketballPolicy::aim_for(std::span<const float> o) const {
   return aim;
 }
 
+// The swing's turn that brings the predicted release speed to the solution's (see FreeThrowShot).
+double ScriptedBasketballPolicy::release_trim(std::span<const float> o) const {
+  // Heading frame, relative to the root: z is up.
+  const Eigen::Vector3d ball = vec3(o, ball_), v = vec3(o, ball_velocity_), rim = vec3(o, rim_);
+  const Eigen::Vector3d palms =
+      0.5 * (body_position(o, kLWrist) + body_rotation(o, kLWrist) * kLeftPalm +
+             body_position(o, kRWrist) + body_rotation(o, kRWrist) * kRightPalm);
+  const Eigen::Vector3d towards =
+      Eigen::Vector3d(rim.x() - ball.x(), rim.y() - ball.y(), 0).normalized();
+  const Eigen::Vector3d from_palms = ball - palms;
+  const std::array<double, 4> x = {v.head<2>().norm(), v.z(), from_palms.dot(towards),
+                                   from_palms.z()};
+  double predicted = shot_.trim_base;
+  for (size_t i = 0; i < x.size(); ++i) predicted += shot_.trim_coef[i] * x[i];
+  return std::clamp((aim_.launch_speed - predicted) / shot_.trim_gain, shot_.trim_min,
+                    shot_.trim_max);
+}
+
 void ScriptedBasketballPolicy::start(const MatchInfo& match) {
   if (match.sport != "basketball" || match.mode != "free_throw")
     throw std::invalid_argument(
@@ -103,6 +124,9 @@ void ScriptedBasketballPolicy::start(const MatchInfo& match) {
         match.sport + " " + match.mode);
   ball_ = match.observation.offset("ball", "position");
   rim_ = match.observation.offset("rim", "centre");
+  ball_velocity_ = match.observation.offset("ball", "velocity");
+  swing_tick_ = 0;
+  trim_ = 0;
   aim_ = {};
   aimed_ = false;
   control_dt_ = match.control_dt;
@@ -136,6 +160,12 @@ void ScriptedBasketballPolicy::act(std::span<const float> o, std::span<float> a)
     pose.elevation = aim_.elevation;
     pose.elbow = shot_.shot_elbow;
     pose.curl = shot_.shot_curl;
+    if (shot_.trim_tick > 0 && aim_.elevation >= shot_.trim_from_elevation) {
+      pose.elevation -= shot_.trim_swing;
+      if (++swing_tick_ >= shot_.trim_tick) pose.curl = shot_.trim_curl;
+      if (swing_tick_ == shot_.trim_tick) trim_ = release_trim(o);
+      pose.elevation += trim_;
+    }
   }
   stand(o, a, shot_);
   set_arm(a, false, bearing, pose);
