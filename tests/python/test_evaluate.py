@@ -3,6 +3,7 @@ validation seeds (not the latest, not the first), measures it on other held-out 
 the scripted player, and a rerun gives the very same tables."""
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -26,6 +27,7 @@ def zero_mlp(obs_size, action_size):
 class Evaluate(unittest.TestCase):
     def make_run(self):
         run = tempfile.mkdtemp(prefix="olympics-eval-")
+        self.addCleanup(shutil.rmtree, run, True)
         spec = catalog.mode("table_tennis", "ball_return")
         os.makedirs(os.path.join(run, "snapshots"))
         with open(os.path.join(run, "args.json"), "w") as f:
@@ -53,6 +55,11 @@ class Evaluate(unittest.TestCase):
         val = first["validation"]
         self.assertGreater(val["v00002"]["score"], 0, "the scripted player returned no ball")
         self.assertEqual(val["v00001"]["score"], 0)
+        # A ball is returned in or not: the score is a rate, given with its Wilson 95% interval.
+        low, high = val["v00002"]["score_rate_95"]
+        self.assertLess(low, val["v00002"]["score_mean"])
+        self.assertGreater(high, val["v00002"]["score_mean"])
+        self.assertEqual(val["v00001"]["score_rate_95"][0], 0.0)
         self.assertEqual(first["best"], 2, "not the best on the validation seeds")
         with open(os.path.join(run, "snapshots", "policy-best.safetensors"), "rb") as a, \
                 open(os.path.join(run, "snapshots", "policy-v00002.safetensors"), "rb") as b:
