@@ -73,6 +73,23 @@ class Evaluate(unittest.TestCase):
         with open(os.path.join(run, "evaluation.md")) as f:
             self.assertIn("| best: v00002 | 12 |", f.read())
 
+    def test_a_score_of_0_or_1_is_a_rate_others_a_mean_each_with_its_95_percent_interval(self):
+        from smpl_olympics.evaluate import summary
+
+        class OneTeam:
+            others = []
+
+        goals = summary([{"scores": [s]} for s in [1, 0, 0, 1, 1, 0, 0, 0, 0, 1]], OneTeam)
+        self.assertNotIn("score_mean_95", goals)
+        # Wilson interval of 4 in 10 (docs/figures.md): 16.8%-68.7%.
+        self.assertAlmostEqual(goals["score_rate_95"][0], 0.1682, places=3)
+        self.assertAlmostEqual(goals["score_rate_95"][1], 0.6873, places=3)
+        balls = summary([{"scores": [s]} for s in [2, 0, 1, 1]], OneTeam)  # a 2: not a rate
+        self.assertNotIn("score_rate_95", balls)
+        half = 1.96 * np.std([2, 0, 1, 1], ddof=1) / 2
+        self.assertAlmostEqual(balls["score_mean_95"][0], 1 - half)
+        self.assertAlmostEqual(balls["score_mean_95"][1], 1 + half)
+
     def test_overlapping_seeds_are_refused(self):
         done = subprocess.run([sys.executable, "-m", "smpl_olympics.evaluate", self.make_run(),
                                "--validation-seeds", "1-20", "--test-seeds", "10-30"],

@@ -134,13 +134,17 @@ def wilson_95(k, n):
 
 
 def summary(results, match):
-    """The learning team's figures over these matches. Where every match scores 0 or 1 (a ball
-    returned in or not, a goal or not) the score is also a rate with its 95% interval."""
+    """The learning team's figures over these matches, with 95% intervals (docs/figures.md): where
+    every match scores 0 or 1 (a goal or not) the score per match is a rate (Wilson interval),
+    else a mean (1.96 standard errors)."""
     scores = [r["scores"][0] for r in results]
     out = {"matches": len(results), "score": float(np.sum(scores)),
            "score_mean": float(np.mean(scores))}
     if all(s in (0, 1) for s in scores):
         out["score_rate_95"] = wilson_95(int(np.sum(scores)), len(scores))
+    else:  # e.g. a ball return whose episode fed two balls: a mean, +-1.96 standard errors
+        half = 1.96 * float(np.std(scores, ddof=1)) / np.sqrt(len(scores)) if len(scores) > 1 else 0.0
+        out["score_mean_95"] = [out["score_mean"] - half, out["score_mean"] + half]
     if match.others:
         out["wins"] = sum(r["winner_team"] == 0 for r in results)
         out["losses"] = sum(r["winner_team"] not in (0, -1) for r in results)
@@ -163,8 +167,8 @@ def table(rows, match):
             (" wins | losses | win rate (95% interval) |" if match.others else ""))
     lines = [head, "|" + "---|" * (head.count("|") - 1)]
     for name, s in rows:
-        per_match = (rate(s["score_mean"], s["score_rate_95"]) if "score_rate_95" in s
-                     else f"{s['score_mean']:.3f}")
+        per_match = (rate(s["score_mean"], s["score_rate_95"]) if "score_rate_95" in s else
+                     f"{s['score_mean']:.3f} ({s['score_mean_95'][0]:.3f}-{s['score_mean_95'][1]:.3f})")
         line = f"| {name} | {s['matches']} | {s['score']:g} | {per_match} |"
         if match.others:
             line += f" {s['wins']} | {s['losses']} | {rate(s['win_rate'], s['win_rate_95'])} |"
