@@ -3,6 +3,7 @@ validation seeds (not the latest, not the first), measures it on other held-out 
 the scripted player, and a rerun gives the very same tables."""
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -26,6 +27,7 @@ def zero_mlp(obs_size, action_size):
 class Evaluate(unittest.TestCase):
     def make_run(self):
         run = tempfile.mkdtemp(prefix="olympics-eval-")
+        self.addCleanup(shutil.rmtree, run, True)
         spec = catalog.mode("table_tennis", "ball_return")
         os.makedirs(os.path.join(run, "snapshots"))
         with open(os.path.join(run, "args.json"), "w") as f:
@@ -53,6 +55,11 @@ class Evaluate(unittest.TestCase):
         val = first["validation"]
         self.assertGreater(val["v00002"]["score"], 0, "the scripted player returned no ball")
         self.assertEqual(val["v00001"]["score"], 0)
+        # A ball is returned in or not: the score is a rate, given with its Wilson 95% interval.
+        low, high = val["v00002"]["score_rate_95"]
+        self.assertLess(low, val["v00002"]["score_mean"])
+        self.assertGreater(high, val["v00002"]["score_mean"])
+        self.assertEqual(val["v00001"]["score_rate_95"][0], 0.0)
         self.assertEqual(first["best"], 2, "not the best on the validation seeds")
         with open(os.path.join(run, "snapshots", "policy-best.safetensors"), "rb") as a, \
                 open(os.path.join(run, "snapshots", "policy-v00002.safetensors"), "rb") as b:
@@ -65,6 +72,23 @@ class Evaluate(unittest.TestCase):
         self.assertEqual(self.evaluate(run), first, "a rerun gave other tables")
         with open(os.path.join(run, "evaluation.md")) as f:
             self.assertIn("| best: v00002 | 12 |", f.read())
+
+    def test_a_score_of_0_or_1_is_a_rate_others_a_mean_each_with_its_95_percent_interval(self):
+        from smpl_olympics.evaluate import summary
+
+        class OneTeam:
+            others = []
+
+        goals = summary([{"scores": [s]} for s in [1, 0, 0, 1, 1, 0, 0, 0, 0, 1]], OneTeam)
+        self.assertNotIn("score_mean_95", goals)
+        # Wilson interval of 4 in 10 (docs/figures.md): 16.8%-68.7%.
+        self.assertAlmostEqual(goals["score_rate_95"][0], 0.1682, places=3)
+        self.assertAlmostEqual(goals["score_rate_95"][1], 0.6873, places=3)
+        balls = summary([{"scores": [s]} for s in [2, 0, 1, 1]], OneTeam)  # a 2: not a rate
+        self.assertNotIn("score_rate_95", balls)
+        half = 1.96 * np.std([2, 0, 1, 1], ddof=1) / 2
+        self.assertAlmostEqual(balls["score_mean_95"][0], 1 - half)
+        self.assertAlmostEqual(balls["score_mean_95"][1], 1 + half)
 
     def test_overlapping_seeds_are_refused(self):
         done = subprocess.run([sys.executable, "-m", "smpl_olympics.evaluate", self.make_run(),

@@ -125,16 +125,36 @@ def play(match, player, seeds, num_envs, lcm_url):
     return [got[s] for s in seeds]
 
 
+def wilson_95(k, n):
+    """The Wilson score interval of k successes in n (docs/figures.md), as [low, high]."""
+    z, p = 1.96, k / n
+    centre = (p + z * z / (2 * n)) / (1 + z * z / n)
+    half = z * np.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / (1 + z * z / n)
+    return [float(max(0.0, centre - half)), float(min(1.0, centre + half))]
+
+
 def summary(results, match):
-    """The learning team's figures over these matches."""
+    """The learning team's figures over these matches, with 95% intervals (docs/figures.md): where
+    every match scores 0 or 1 (a goal or not) the score per match is a rate (Wilson interval),
+    else a mean (1.96 standard errors)."""
     scores = [r["scores"][0] for r in results]
     out = {"matches": len(results), "score": float(np.sum(scores)),
            "score_mean": float(np.mean(scores))}
+    if all(s in (0, 1) for s in scores):
+        out["score_rate_95"] = wilson_95(int(np.sum(scores)), len(scores))
+    else:  # e.g. a ball return whose episode fed two balls: a mean, +-1.96 standard errors
+        half = 1.96 * float(np.std(scores, ddof=1)) / np.sqrt(len(scores)) if len(scores) > 1 else 0.0
+        out["score_mean_95"] = [out["score_mean"] - half, out["score_mean"] + half]
     if match.others:
         out["wins"] = sum(r["winner_team"] == 0 for r in results)
         out["losses"] = sum(r["winner_team"] not in (0, -1) for r in results)
         out["win_rate"] = out["wins"] / len(results)
+        out["win_rate_95"] = wilson_95(out["wins"], len(results))
     return out
+
+
+def rate(value, interval):
+    return f"{100 * value:.1f}% ({100 * interval[0]:.1f}-{100 * interval[1]:.1f}%)"
 
 
 def figure(s):
@@ -143,12 +163,15 @@ def figure(s):
 
 
 def table(rows, match):
-    head = "| player | matches | score |" + (" wins | losses |" if match.others else "")
+    head = ("| player | matches | score | score per match (95% interval) |" +
+            (" wins | losses | win rate (95% interval) |" if match.others else ""))
     lines = [head, "|" + "---|" * (head.count("|") - 1)]
     for name, s in rows:
-        line = f"| {name} | {s['matches']} | {s['score']:g} |"
+        per_match = (rate(s["score_mean"], s["score_rate_95"]) if "score_rate_95" in s else
+                     f"{s['score_mean']:.3f} ({s['score_mean_95'][0]:.3f}-{s['score_mean_95'][1]:.3f})")
+        line = f"| {name} | {s['matches']} | {s['score']:g} | {per_match} |"
         if match.others:
-            line += f" {s['wins']} | {s['losses']} |"
+            line += f" {s['wins']} | {s['losses']} | {rate(s['win_rate'], s['win_rate_95'])} |"
         lines.append(line)
     return "\n".join(lines)
 
