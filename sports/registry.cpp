@@ -19,6 +19,7 @@ namespace olympics::sports {
   X(basketball)            \
   X(long_jump)             \
   X(high_jump)             \
+  X(hurdles)               \
   /* the list's end */
 // clang-format on
 
