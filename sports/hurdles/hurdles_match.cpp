@@ -6,6 +6,7 @@
 #include "athletics/athlete_probe.h"
 #include "athletics/competition.h"
 #include "core/humanoid_assets.h"
+#include "framework/jittered_start.h"
 #include "hurdles/hurdles_rewards.h"
 #include "hurdles/race_places.h"
 
@@ -65,7 +66,8 @@ HurdlesMatch::HurdlesMatch(const HurdlesRules& rules, const ModeSpec& mode, Layo
     : SmplMatch(mode, std::move(layout), settings), rules_(rules) {
   for (int slot = 0; slot < slot_count(); ++slot) {
     build_lane(slot);
-    add_player(athlete_model(), {{rules_.start_x, lane_y(slot), 0.0}, 0.0});
+    // Seeds differ: the start mark moved by up to 0.1 m and turned by up to 0.1 rad.
+    add_player(athlete_model(), jittered_start({rules_.start_x, lane_y(slot)}, 0.0, rng()));
   }
   torso_ = bodies_named(player(0), {"Pelvis", "Torso", "Spine", "Chest"});
   legs_ = bodies_named(player(0), {"Knee", "Ankle", "Toe"});

@@ -25,8 +25,8 @@ struct HurdlesRules {
   // The seed's termination: a non-foot body touching with more than 50 N, the root more than
   // 0.8 m off the lane's centre line, a fall.
   double touch_force_n = 50.0, track_half_width = 0.8;
-  double start_x =
-      0.0;  // the root's start (the seed's: 0; official: -0.25, the feet behind the line)
+  double start_x = 0.0;    // the root's start mark, +-0.1 m (the seed's: 0; official: -0.3,
+                           // the feet behind the line)
   double get_up_s = 10.0;  // official: down this long in a row, the athlete did not finish
   double goal_z = 1.0;     // the seed's goal: the finish line's point 1 m up
 

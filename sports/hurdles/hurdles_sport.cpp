@@ -54,7 +54,7 @@ HurdlesRules HurdlesSport::rules(const nlohmann::json& options) const {
   // Lanes side by side: the official 1.22 m; the seed's 2 m walls need its 2 m.
   r.lane_spacing = r.free_hurdles ? 1.22 : 2.0;
   r.lane_width = r.official ? 1.22 : 2 * r.track_half_width;
-  r.start_x = r.official ? -0.25 : 0.0;
+  r.start_x = r.official ? -0.3 : 0.0;
   r.get_up_s = s.at("get_up_s");
   return r;
 }

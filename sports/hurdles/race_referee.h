@@ -4,8 +4,8 @@
 //
 // Official (World Athletics): the finish is the moment any part of the torso reaches the finish
 // line's plane (TR 19.2), timed to the physics step, interpolated, and read to 1/1000 s rounded up
-// (TR 19.24); a foot on the ground outside the lane's lines (TR 17.3.1, 22.6.1) and a trail leg that
-// passes a hurdle beside it, below the top (TR 22.6.2), disqualify; knocking hurdles over does
+// (TR 19.24); a foot on the ground outside the lane's lines (TR 17.3.1, 22.6.1) and a trail leg
+// that passes a hurdle beside it, below the top (TR 22.6.2), disqualify; knocking hurdles over does
 // not; a fall does not either, but an athlete down get_up_s in a row did not finish (ours: a race
 // does not wait). Paper (the seed, SMPLOlympics' code): a finish is the root past the line; the
 // run ends on a fall, a non-foot body pushing a hurdle with over 50 N, or the root more than
