@@ -5,6 +5,7 @@
 
 #include "bench_support.h"
 #include "core/humanoid_assets.h"
+#include "hurdles_bench.h"
 
 namespace olympics::bench {
 namespace {
@@ -76,33 +77,42 @@ nlohmann::json run_athletics_bench(const AthleticsBenchOptions& o) {
   nlohmann::json report = {
       {"seeds", o.seeds.empty() ? "1-" + std::to_string(o.episodes) : o.seeds}};
   for (const auto& policy : o.policies) {
+    if (policy == "none") continue;
     report["long_jump"][policy] = long_jumps(policy, seeds);
     report["high_jump"][policy] = high_jumps(policy, seeds);
   }
+  for (const auto& policy : o.hurdles_policies)
+    if (policy != "none")
+      for (const char* rules : {"paper", "official"})
+        report["hurdles"][rules][policy] = hurdles_races(policy, seeds, {{"rules", rules}});
   if (o.speed) {
     const core::ModelSpec& smpl = core::load_humanoid(core::HumanoidKind::Smpl);
     for (const char* sport : {"long_jump", "high_jump"})
       report["speed_competition_8"][sport] =
           speed_vs_bare(sport, smpl, o.seconds, o.repeats, 45, "competition_8");
+    report["speed_competition_8"]["hurdles"] = speed_vs_bare(
+        "hurdles", smpl, o.seconds, o.repeats, 45, "competition_8", {{"rules", "official"}});
   }
   return report;
 }
 
 void print_athletics_report(const nlohmann::json& r) {
   std::printf("seeds %s\n", r["seeds"].get<std::string>().c_str());
+  const nlohmann::json none = nlohmann::json::object();  // the jumps skipped (--policies none)
   std::printf("long jump (official, one attempt):\n");
-  for (const auto& [policy, v] : r["long_jump"].items())
+  for (const auto& [policy, v] : (r.contains("long_jump") ? r["long_jump"] : none).items())
     std::printf("  %-8s valid %.2f [%.2f, %.2f]  fouls %.2f [%.2f, %.2f]  mean mark %.2f m  %s\n",
                 policy.c_str(), v["valid_rate"].get<double>(), v["valid_ci95"][0].get<double>(),
                 v["valid_ci95"][1].get<double>(), v["foul_rate"].get<double>(),
                 v["foul_ci95"][0].get<double>(), v["foul_ci95"][1].get<double>(),
                 v["mean_mark_m"].get<double>(), v["endings"].dump().c_str());
   std::printf("high jump (paper, one try): leap-over rate per bar height\n");
-  for (const auto& [policy, heights] : r["high_jump"].items())
+  for (const auto& [policy, heights] : (r.contains("high_jump") ? r["high_jump"] : none).items())
     for (const auto& [h, v] : heights.items())
       std::printf("  %-8s %s m  %.2f [%.2f, %.2f]  %s\n", policy.c_str(), h.c_str(),
                   v["leap_over_rate"].get<double>(), v["leap_over_ci95"][0].get<double>(),
                   v["leap_over_ci95"][1].get<double>(), v["endings"].dump().c_str());
+  if (r.contains("hurdles")) print_hurdles_report(r["hurdles"]);
   if (!r.contains("speed_competition_8")) return;
   for (const auto& [sport, v] : r["speed_competition_8"].items())
     std::printf(
