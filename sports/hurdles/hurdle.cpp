@@ -83,14 +83,39 @@ Hurdle::Hurdle(core::PhysicsWorld& world, const HurdlesRules& rules, double x, d
   tag_.entity = world.add_entity([](int, int) { return false; });
   tag_.body = 0, tag_.geom = 0;
   tag_.friction = 0.8;
+  // Its geoms in a space of their own inside the world's: the world's broad phase (a simple
+  // space, every pair) then meets one entry per hurdle, not five, and leaves a sleeping hurdle
+  // out with one flag.
+  space_ = dSimpleSpaceCreate(world.space());
   for (const auto& p : parts_) {
     if (!p.collides) continue;
-    dGeomID g = dCreateBox(world.space(), 2 * p.half.x(), 2 * p.half.y(), 2 * p.half.z());
+    dGeomID g = dCreateBox(space_, 2 * p.half.x(), 2 * p.half.y(), 2 * p.half.z());
     dGeomSetBody(g, body_);
     const Eigen::Vector3d at = p.centre - com_;
     dGeomSetOffsetPosition(g, at.x(), at.y(), at.z());
     dGeomSetData(g, &tag_);
   }
+}
+
+void Hurdle::set_awake(bool awake) {
+  if (awake == awake_) return;
+  awake_ = awake;
+  if (awake) {
+    dBodyEnable(body_);
+    dGeomEnable(reinterpret_cast<dGeomID>(space_));
+  } else {
+    dBodySetLinearVel(body_, 0, 0, 0);
+    dBodySetAngularVel(body_, 0, 0, 0);
+    dBodyDisable(body_);
+    dGeomDisable(reinterpret_cast<dGeomID>(space_));
+  }
+}
+
+bool Hurdle::at_rest() const {
+  const dReal* v = dBodyGetLinearVel(body_);
+  const dReal* w = dBodyGetAngularVel(body_);
+  return Eigen::Vector3d(v[0], v[1], v[2]).norm() < 0.02 &&
+         Eigen::Vector3d(w[0], w[1], w[2]).norm() < 0.05;
 }
 
 Eigen::Vector3d Hurdle::position() const {

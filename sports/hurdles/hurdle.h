@@ -43,6 +43,13 @@ class Hurdle {
   Eigen::Quaterniond orientation() const;
   // Tilted past 45 degrees from upright: knocked over.
   bool knocked_over() const;
+  // Asleep, the hurdle is left out of the simulation (its body disabled, its geoms out of
+  // collision): nothing can touch it, so it stays exactly as it lay. The match puts hurdles at
+  // rest and far from every athlete to sleep (the race's 80 hurdles, at rest on 8 contact points
+  // each, would otherwise cost the solver more than the 8 athletes).
+  void set_awake(bool awake);
+  bool awake() const { return awake_; }
+  bool at_rest() const;
   // The parts' shapes in the body's frame (for viewers).
   const std::vector<HurdlePart>& parts() const { return parts_; }
   const Eigen::Vector3d& centre_of_mass() const { return com_; }  // in the hurdle's frame
@@ -52,7 +59,9 @@ class Hurdle {
   Eigen::Vector3d com_ = Eigen::Vector3d::Zero();
   double height_;
   dBodyID body_ = nullptr;
+  dSpaceID space_ = nullptr;  // its geoms
   core::GeomTag tag_;
+  bool awake_ = true;
 };
 
 }  // namespace olympics::sports::hurdles

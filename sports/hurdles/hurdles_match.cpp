@@ -87,6 +87,7 @@ void HurdlesMatch::build_lane(int slot) {
     const double x = rules_.hurdle_x(i);
     if (rules_.free_hurdles) {
       lane.hurdles.push_back(std::make_unique<Hurdle>(scene().world(), rules_, x, lane_y(slot)));
+      lane.hurdles.back()->set_awake(false);  // until an athlete comes near
       lane.counted.push_back(false);
     } else {  // the seed's: a fixed box centred on the ground, its top at the hurdle's height
       dGeomID g = scene().world().add_static_box(
@@ -193,6 +194,29 @@ void HurdlesMatch::count_knocked(int slot) {
   }
 }
 
+// A hurdle sleeps while it is at rest and no athlete's root is within reach of it: kWakeBehind_m
+// before it to kWakeAhead_m past it along the track, and two lanes either side (an athlete moves
+// at most a third of a metre a tick).
+void HurdlesMatch::wake_hurdles_near_athletes() {
+  constexpr double kWakeBehind_m = 3.0, kWakeAhead_m = 2.0, kWakeAcross_m = 2.5;
+  std::vector<Eigen::Vector3d> roots;
+  for (int slot = 0; slot < slot_count(); ++slot)
+    roots.push_back(player(slot).body_state(0).position);
+  for (int lane = 0; lane < slot_count(); ++lane)
+    for (int i = 0; i < static_cast<int>(lanes_[lane].hurdles.size()); ++i) {
+      Hurdle& h = *lanes_[lane].hurdles[i];
+      const double x = rules_.hurdle_x(i), y = lane_y(lane);
+      const bool near = std::any_of(roots.begin(), roots.end(), [&](const Eigen::Vector3d& r) {
+        return r.x() > x - kWakeBehind_m && r.x() < x + kWakeAhead_m &&
+               std::abs(r.y() - y) < kWakeAcross_m;
+      });
+      if (near)
+        h.set_awake(true);
+      else if (h.at_rest())
+        h.set_awake(false);
+    }
+}
+
 void HurdlesMatch::announce(int slot) {
   Athlete& a = athletes_[slot];
   const RaceResult& r = *a.result;
@@ -211,6 +235,7 @@ void HurdlesMatch::announce(int slot) {
 }
 
 void HurdlesMatch::settle_tick() {
+  if (rules_.free_hurdles) wake_hurdles_near_athletes();
   for (int slot = 0; slot < slot_count(); ++slot) {
     Athlete& a = athletes_[slot];
     if (rules_.free_hurdles) count_knocked(slot);

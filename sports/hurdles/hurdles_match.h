@@ -71,6 +71,7 @@ class HurdlesMatch : public SmplMatch {
   Eigen::Vector3d hurdle_top(int slot, int i) const;
   Eigen::Vector3d goal(int slot) const { return {rules_.race_m, lane_y(slot), rules_.goal_z}; }
   void count_knocked(int slot);
+  void wake_hurdles_near_athletes();
   void announce(int slot);
   void finish(const std::string& why);
 
