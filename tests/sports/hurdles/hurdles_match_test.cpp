@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "../athletics/field_event_session.h"
 #include "hurdles/hurdle.h"
 #include "hurdles/hurdles_sport.h"
@@ -131,6 +133,53 @@ TEST(HurdlesMatch, AnEightAthleteRaceRanksAllEight) {
   EXPECT_EQ(m.outcome().winner_team, 1);
   EXPECT_FLOAT_EQ(m.outcome().scores[1], static_cast<float>(m.result(1)->time));
   EXPECT_EQ(m.outcome().scores[4], 0.0f);
+}
+
+}  // namespace
+}  // namespace olympics::sports::hurdles
+
+namespace olympics::sports::hurdles {
+namespace {
+
+TEST(HurdlesRules, PaperIsTheSeedsAndOfficialTheRulebooks) {
+  const HurdlesSport sport;
+  const HurdlesRules paper = sport.rules(nlohmann::json::object());
+  EXPECT_FALSE(paper.official);
+  EXPECT_FALSE(paper.free_hurdles) << "the seed's fixed walls";
+  EXPECT_DOUBLE_EQ(paper.lane_spacing, 2.0);
+  EXPECT_DOUBLE_EQ(paper.start_x, 0.0);
+  EXPECT_DOUBLE_EQ(paper.hurdle_x(0), 13.72);
+  EXPECT_NEAR(paper.hurdle_x(9), 95.98, 1e-9) << "the seed's hurdle_location";
+  const HurdlesRules official = sport.rules(kOfficial);
+  EXPECT_TRUE(official.official);
+  EXPECT_TRUE(official.free_hurdles);
+  EXPECT_DOUBLE_EQ(official.lane_spacing, 1.22);
+  EXPECT_DOUBLE_EQ(official.race_m, 110.0);
+  const HurdlesRules women = sport.rules({{"rules", "official"}, {"race", "100m"}});
+  EXPECT_DOUBLE_EQ(women.race_m, 100.0);
+  EXPECT_DOUBLE_EQ(women.hurdle_height, 0.838);
+  EXPECT_DOUBLE_EQ(women.hurdle_x(0), 13.0);
+  EXPECT_NEAR(women.hurdle_x(9), 89.5, 1e-9) << "10.50 m from the last hurdle to the line";
+}
+
+// Same seed and actions, same race, free hurdles included (they sleep and wake by the state).
+TEST(HurdlesMatch, OfficialRacesReplayBitForBit) {
+  auto play = [] {
+    Session r("hurdles", "competition_2", kOfficial);
+    r.match->athlete(0).reset({{12.9, 0, 0}, 0});  // into the first hurdle, which wakes
+    give_velocity(r.match->athlete(0), {2.5, 0, 0});
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(-0.3f, 0.3f);
+    std::vector<float> a(r.match->action_size());
+    for (int t = 0; t < 60; ++t) {
+      for (float& x : a) x = u(rng);
+      r.match->step({a, a});
+    }
+    return std::make_pair(r.match->state_hash(), r.match->knocked(0));
+  };
+  const auto first = play(), second = play();
+  EXPECT_EQ(first.first, second.first);
+  EXPECT_EQ(first.second, 1) << "the first hurdle went over, so its sleep and wake were exercised";
 }
 
 }  // namespace
