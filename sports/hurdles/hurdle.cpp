@@ -59,7 +59,8 @@ double tipping_force_kgf(const std::vector<HurdlePart>& parts, double height) {
   return mass * (kBaseFront - moment / mass) / height;
 }
 
-Hurdle::Hurdle(core::PhysicsWorld& world, const HurdlesRules& rules, double x, double y)
+Hurdle::Hurdle(core::PhysicsWorld& world, const HurdlesRules& rules, double x, double y,
+               dSpaceID parent)
     : parts_(hurdle_parts(rules)), height_(rules.hurdle_height) {
   dMass total;
   dMassSetZero(&total);
@@ -86,7 +87,7 @@ Hurdle::Hurdle(core::PhysicsWorld& world, const HurdlesRules& rules, double x, d
   // Its geoms in a space of their own inside the world's: the world's broad phase (a simple
   // space, every pair) then meets one entry per hurdle, not five, and leaves a sleeping hurdle
   // out with one flag.
-  space_ = dSimpleSpaceCreate(world.space());
+  space_ = dSimpleSpaceCreate(parent ? parent : world.space());
   for (const auto& p : parts_) {
     if (!p.collides) continue;
     dGeomID g = dCreateBox(space_, 2 * p.half.x(), 2 * p.half.y(), 2 * p.half.z());

@@ -31,8 +31,10 @@ double tipping_force_kgf(const std::vector<HurdlePart>& parts, double height);
 
 class Hurdle {
  public:
-  // A hurdle standing with its top bar's centre above (x, y).
-  Hurdle(core::PhysicsWorld& world, const HurdlesRules& rules, double x, double y);
+  // A hurdle standing with its top bar's centre above (x, y); its geoms go in a space of their
+  // own inside `parent` (a lane's space; none: the world's).
+  Hurdle(core::PhysicsWorld& world, const HurdlesRules& rules, double x, double y,
+         dSpaceID parent = nullptr);
   Hurdle(const Hurdle&) = delete;
   Hurdle& operator=(const Hurdle&) = delete;
 

@@ -83,10 +83,15 @@ HurdlesMatch::HurdlesMatch(const HurdlesRules& rules, const ModeSpec& mode, Layo
 
 void HurdlesMatch::build_lane(int slot) {
   Lane lane;
+  // The lane's hurdles in one space inside the world's: the broad phase meets one entry per lane
+  // (its athlete's geoms then test the lane's ten hurdles), not one per hurdle.
+  const dSpaceID lane_space =
+      rules_.free_hurdles ? dSimpleSpaceCreate(scene().world().space()) : nullptr;
   for (int i = 0; i < kHurdles; ++i) {
     const double x = rules_.hurdle_x(i);
     if (rules_.free_hurdles) {
-      lane.hurdles.push_back(std::make_unique<Hurdle>(scene().world(), rules_, x, lane_y(slot)));
+      lane.hurdles.push_back(
+          std::make_unique<Hurdle>(scene().world(), rules_, x, lane_y(slot), lane_space));
       lane.hurdles.back()->set_awake(false);  // until an athlete comes near
       lane.counted.push_back(false);
     } else {  // the seed's: a fixed box centred on the ground, its top at the hurdle's height
