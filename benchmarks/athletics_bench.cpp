@@ -7,6 +7,7 @@
 #include "bench_support.h"
 #include "core/humanoid_assets.h"
 #include "javelin_bench.h"
+#include "hurdles_bench.h"
 
 namespace olympics::bench {
 namespace {
@@ -84,6 +85,9 @@ nlohmann::json run_athletics_bench(const AthleticsBenchOptions& o) {
     if (wanted("long_jump")) report["long_jump"][policy] = long_jumps(policy, seeds);
     if (wanted("high_jump")) report["high_jump"][policy] = high_jumps(policy, seeds);
     if (wanted("javelin")) report["javelin"][policy] = javelin_throws(policy, seeds);
+    if (wanted("hurdles"))
+      for (const char* rules : {"paper", "official"})
+        report["hurdles"][rules][policy] = hurdles_races(policy, seeds, {{"rules", rules}});
   }
   if (wanted("javelin")) report["javelin_flight"] = javelin_flight(seeds);
   if (o.speed) {
@@ -92,6 +96,9 @@ nlohmann::json run_athletics_bench(const AthleticsBenchOptions& o) {
       if (wanted(sport))
         report["speed_competition_8"][sport] =
             speed_vs_bare(sport, smpl, o.seconds, o.repeats, 45, "competition_8");
+    if (wanted("hurdles"))
+      report["speed_competition_8"]["hurdles"] = speed_vs_bare(
+          "hurdles", smpl, o.seconds, o.repeats, 45, "competition_8", {{"rules", "official"}});
     // The javelin's SMPL-X athletes, over the first 15 ticks (the javelins still held).
     if (wanted("javelin"))
       report["speed_competition_8"]["javelin"] =
@@ -119,6 +126,7 @@ void print_athletics_report(const nlohmann::json& r) {
                   v["leap_over_rate"].get<double>(), v["leap_over_ci95"][0].get<double>(),
                   v["leap_over_ci95"][1].get<double>(), v["endings"].dump().c_str());
   print_javelin_report(r);
+  if (r.contains("hurdles")) print_hurdles_report(r["hurdles"]);
   if (!r.contains("speed_competition_8")) return;
   for (const auto& [sport, v] : r["speed_competition_8"].items())
     std::printf(

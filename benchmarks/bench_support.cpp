@@ -98,7 +98,7 @@ double median(std::vector<double> v) {
 }
 
 double match_ticks_per_s(const std::string& sport, double seconds, int ticks_per_match,
-                         const std::string& mode) {
+                         const std::string& mode, const nlohmann::json& options) {
   const auto& s = sports::sport_or_throw(sport);
   const int slots = s.modes().at(mode).slot_count();
   std::vector<float> act;
@@ -108,7 +108,7 @@ double match_ticks_per_s(const std::string& sport, double seconds, int ticks_per
   double stepping = 0;
   std::uint64_t seed = 1;
   while (stepping < seconds) {
-    auto match = s.create({mode, seed++, 60.0, {}});
+    auto match = s.create({mode, seed++, 60.0, options});
     obs.resize(match->obs_size());
     act.assign(match->action_size(), 0.0f);
     actions.assign(slots, std::span<const float>(act));
@@ -142,11 +142,12 @@ double bare_ticks_per_s(const core::ModelSpec& spec, double seconds, int ticks_p
 }
 
 nlohmann::json speed_vs_bare(const std::string& sport, const core::ModelSpec& players,
-                             double seconds, int repeats, int ticks, const std::string& mode) {
+                             double seconds, int repeats, int ticks, const std::string& mode,
+                             const nlohmann::json& options) {
   const int count = sports::sport_or_throw(sport).modes().at(mode).slot_count();
   std::vector<double> match, bare, ratio;
   for (int i = 0; i < repeats; ++i) {
-    match.push_back(match_ticks_per_s(sport, seconds, ticks, mode));
+    match.push_back(match_ticks_per_s(sport, seconds, ticks, mode, options));
     bare.push_back(bare_ticks_per_s(players, seconds, ticks, count));
     ratio.push_back(match.back() / bare.back());
   }

@@ -46,7 +46,8 @@ double sandbox_ticks_per_second(int matches, double seconds);
 // Ticks per second of a sport's mode (1v1 unless said) with zero actions, one core: matches of
 // `ticks` each (or until one ends), only the stepping timed.
 double match_ticks_per_s(const std::string& sport, double seconds, int ticks,
-                         const std::string& mode = "1v1");
+                         const std::string& mode = "1v1",
+                         const nlohmann::json& options = nlohmann::json::object());
 // Likewise for `players` humanoids of `spec` with nothing else: no arena, referee or rewards.
 double bare_ticks_per_s(const core::ModelSpec& spec, double seconds, int ticks, int players = 2);
 // Both, interleaved `repeats` times so that drift hits both alike: medians and their ratio.
@@ -54,6 +55,7 @@ double bare_ticks_per_s(const core::ModelSpec& spec, double seconds, int ticks, 
 // puts fallen players back on their marks, bare physics leaves them on the floor.
 nlohmann::json speed_vs_bare(const std::string& sport, const core::ModelSpec& players,
                              double seconds, int repeats, int ticks,
-                             const std::string& mode = "1v1");
+                             const std::string& mode = "1v1",
+                             const nlohmann::json& options = nlohmann::json::object());
 
 }  // namespace olympics::bench

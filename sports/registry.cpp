@@ -20,6 +20,7 @@ namespace olympics::sports {
   X(long_jump)             \
   X(high_jump)             \
   X(javelin)               \
+  X(hurdles)               \
   /* the list's end */
 // clang-format on
 

@@ -18,6 +18,7 @@ namespace olympics::client {
   X(soccer, soccer)                    \
   X(basketball, basketball)            \
   X(javelin, javelin)                  \
+  X(hurdles, hurdles)                  \
   /* the list's end */
 // clang-format on
 

@@ -130,6 +130,12 @@ void PhysicsWorld::record_ground_contact(const GeomTag* tag, const dContactGeom*
 }
 
 void PhysicsWorld::near_callback(void* self, dGeomID a, dGeomID b) {
+  // A space inside the world's (the geoms of one piece of equipment, so that the broad phase
+  // tests the piece once against the rest): collide what it holds.
+  if (dGeomIsSpace(a) || dGeomIsSpace(b)) {
+    dSpaceCollide2(a, b, self, &PhysicsWorld::near_callback);
+    return;
+  }
   static_cast<PhysicsWorld*>(self)->collide_pair(a, b);
 }
 
