@@ -2,7 +2,7 @@
 // seated in one competition_8 heat, each played by an olympics-agent process the league starts;
 // the game is stored with the eight places of the server's record (info["places"]) and the
 // table rates them with one eight-team Weng-Lin update. The sport is the test's parameter: the
-// field events today, the 8-athlete hurdles race of issue 31 once it lands (add it to the list).
+// field events and the 8-athlete hurdles race of issue 31.
 // And a tournament of heats killed with SIGKILL resumes to the table of an uninterrupted one.
 #include <chrono>
 #include <csignal>
@@ -188,13 +188,15 @@ TEST(RankedLeagueResume, KilledAfterAHeatItResumesToTheSameTable) {
   }
 }
 
-// Hurdles (issue 31's 8-athlete race) joins this list when it lands.
+// Issue 31's 8-athlete hurdles race among them: zero and random athletes go down, and a short
+// get_up_s makes them "did not finish" within seconds.
 INSTANTIATE_TEST_SUITE_P(
     Athletics, RankedLeague,
     ::testing::Values(
         RankedSport{"long_jump", R"({"rules": "official", "attempts": 1, "attempt_s": 2})"},
         RankedSport{"high_jump",
-                    R"({"rules": "official", "heights": 1, "tries": 1, "attempt_s": 2})"}),
+                    R"({"rules": "official", "heights": 1, "tries": 1, "attempt_s": 2})"},
+        RankedSport{"hurdles", R"({"rules": "official", "get_up_s": 1})"}),
     [](const auto& info) { return info.param.sport; });
 
 }  // namespace
