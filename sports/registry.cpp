@@ -19,6 +19,7 @@ namespace olympics::sports {
   X(basketball)            \
   X(long_jump)             \
   X(high_jump)             \
+  X(golf)                  \
   /* the list's end */
 // clang-format on
 
