@@ -4,7 +4,10 @@
 
 namespace olympics::sports::golf {
 
-int HoleReferee::score() const { return std::min(strokes_ + penalties_, rules_.max_strokes); }
+int HoleReferee::score() const {
+  if (over_ && !holed_) return rules_.max_strokes;  // picked up: the maximum (Rule 21.2b)
+  return std::min(strokes_ + penalties_, rules_.max_strokes);
+}
 
 GolfCall HoleReferee::step(const GolfTick& s) {
   if (over_) return GolfCall::None;

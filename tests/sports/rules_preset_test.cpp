@@ -15,8 +15,9 @@ namespace {
 
 const nlohmann::json kOfficial = {{"rules", "official"}};
 
-const std::vector<std::string> kSports = {"tennis", "table_tennis", "fencing",   "boxing",
-                                          "soccer", "basketball",   "long_jump", "high_jump"};
+const std::vector<std::string> kSports = {"tennis",    "table_tennis", "fencing",
+                                          "boxing",    "soccer",       "basketball",
+                                          "long_jump", "high_jump",    "golf"};
 
 TEST(RulesPreset, EverySportHasItPaperByDefaultAndItsOfficialValuesAreAllowed) {
   for (const auto& name : kSports) {
