@@ -17,6 +17,7 @@ namespace olympics::client {
   X(boxing, boxing)                    \
   X(soccer, soccer)                    \
   X(basketball, basketball)            \
+  X(golf, golf)                        \
   /* the list's end */
 // clang-format on
 

@@ -9,7 +9,7 @@ constexpr double kShaftRadius = 0.008;
 
 }  // namespace
 
-ClubSpec putter() { return {"putter", 0.78, 3.0, {0.015, 0.0125, 0.05}, 0.33, 0.12, 0.8}; }
+ClubSpec putter() { return {"putter", 0.75, 3.0, {0.015, 0.0125, 0.05}, 0.33, 0.12, 0.8}; }
 
 ClubSpec driver() { return {"driver", 1.14, 10.5, {0.025, 0.025, 0.055}, 0.20, 0.10, 0.83}; }
 

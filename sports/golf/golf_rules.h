@@ -20,7 +20,7 @@ struct GolfRules {
   double lane_half_width = 2.5;  // m either side of the line to the hole; beyond: out of bounds
   // Where a stroke is addressed from: the athlete is placed facing the hole with the ball
   // `address_side` m to its right and `address_ahead` m ahead of its root (a face-on putter).
-  double address_side = 0.30, address_ahead = 0.0;
+  double address_side = 0.38, address_ahead = -0.17;
   // Paper: the target `U(0, max_target)` m to the athlete's left of the ball (the seed's 0-20 m).
   double max_target = 20.0;
   double lane_spacing = 5.0;  // m between the athletes' lanes (paper: along x; official: along y)
