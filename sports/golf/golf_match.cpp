@@ -277,7 +277,7 @@ void GolfMatch::settle_tick() {
                                                  : -1.0);
   }
   if (std::all_of(athletes_.begin(), athletes_.end(), [](const Athlete& a) { return a.over; }))
-    finish(rules_.official ? "holed_out" : "shots_complete");
+    finish(rules_.official ? "holes_complete" : "shots_complete");
 }
 
 std::vector<int> GolfMatch::places() const {

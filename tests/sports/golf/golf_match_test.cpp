@@ -61,7 +61,7 @@ TEST(GolfMatch, AClubContactIsAStrokeAndAHoledBallEndsTheHole) {
   ASSERT_FALSE(holed.is_null());
   EXPECT_EQ(holed["strokes"], 1);
   EXPECT_TRUE(m.outcome().match_over);
-  EXPECT_EQ(m.outcome().reason, "holed_out");
+  EXPECT_EQ(m.outcome().reason, "holes_complete");
   EXPECT_EQ(m.outcome().scores[0], 1.0f);
   EXPECT_EQ(m.outcome().info["places"], nlohmann::json::array({1}));
 }
