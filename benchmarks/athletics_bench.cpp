@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <random>
 
 #include "bench_support.h"
 #include "core/humanoid_assets.h"
-#include "javelin_bench.h"
 #include "hurdles_bench.h"
+#include "javelin_bench.h"
 
 namespace olympics::bench {
 namespace {
@@ -72,6 +73,71 @@ nlohmann::json high_jumps(const std::string& policy, const std::vector<std::uint
   return by_height;
 }
 
+// Golf, official: one hole per seed, the distance drawn from the seed (U[1, 3] m: the scripted
+// putter was tuned on 1, 1.5, 2, 2.5 and 3 m only), 20 s and at most 6 strokes to hole out.
+// Hit = a stroke was played; the first putt's end (holed or at rest) and the hole's.
+nlohmann::json golf_holes(const std::string& policy, const std::vector<std::uint64_t>& seeds) {
+  int hit = 0, holed = 0, holed_first = 0, strokes = 0;
+  double first_miss = 0;
+  for (const std::uint64_t seed : seeds) {
+    std::mt19937_64 draw(seed);
+    nlohmann::json options = {{"rules", "official"}, {"hole_s", 20}, {"max_strokes", 6}};
+    options["distance"] = std::uniform_real_distribution<double>(1.0, 3.0)(draw);
+    bool first = true, in = false;
+    int taken = 0;
+    play_in_process("golf", {"solo", seed, 0.0, options}, {policy},
+                    [&](const sports::SportMatch& m) {
+                      for (const auto& e : m.outcome().info["events"]) {
+                        const std::string call = e["call"];
+                        if (call == "stroke") taken = e["stroke"];
+                        if (call == "holed") in = true;
+                        if (first && (call == "holed" || call == "at_rest")) {
+                          first = false;
+                          holed_first += call == "holed";
+                          first_miss += call == "holed" ? 0.0 : e["distance"].get<double>();
+                        }
+                      }
+                    });
+    hit += taken > 0, holed += in, strokes += in ? taken : 0;
+  }
+  const int n = static_cast<int>(seeds.size());
+  return {{"holes", n},
+          {"hit_rate", static_cast<double>(hit) / n},
+          {"hit_ci95", wilson_95(hit, n)},
+          {"first_putt_holed_rate", static_cast<double>(holed_first) / n},
+          {"first_putt_holed_ci95", wilson_95(holed_first, n)},
+          {"mean_first_putt_distance_m", hit ? first_miss / hit : 0.0},
+          {"holed_rate", static_cast<double>(holed) / n},
+          {"holed_ci95", wilson_95(holed, n)},
+          {"mean_strokes_when_holed", holed ? static_cast<double>(strokes) / holed : 0.0}};
+}
+
+// Golf, paper: the seed's shot and its metrics (hit = its contact; stop distance; success =
+// stopped within 1 m of the target).
+nlohmann::json golf_shots(const std::string& policy, const std::vector<std::uint64_t>& seeds) {
+  int hit = 0, stopped = 0, success = 0;
+  double stop = 0;
+  std::map<std::string, int> endings;
+  for (const std::uint64_t seed : seeds) {
+    const nlohmann::json e = decision("golf", {}, seed, policy);
+    if (e.is_null()) {
+      ++endings["undecided"];
+      continue;
+    }
+    ++endings[e["reason"].get<std::string>()];
+    hit += e["hit"].get<bool>(), success += e["success"].get<bool>();
+    if (e["reason"] == "ball_stopped") ++stopped, stop += e["stop_distance"].get<double>();
+  }
+  const int n = static_cast<int>(seeds.size());
+  return {{"shots", n},
+          {"hit_rate", static_cast<double>(hit) / n},
+          {"hit_ci95", wilson_95(hit, n)},
+          {"mean_stop_distance_m", stopped ? stop / stopped : 0.0},
+          {"success_rate", static_cast<double>(success) / n},
+          {"success_ci95", wilson_95(success, n)},
+          {"endings", endings}};
+}
+
 }  // namespace
 
 nlohmann::json run_athletics_bench(const AthleticsBenchOptions& o) {
@@ -88,11 +154,18 @@ nlohmann::json run_athletics_bench(const AthleticsBenchOptions& o) {
     if (wanted("hurdles"))
       for (const char* rules : {"paper", "official"})
         report["hurdles"][rules][policy] = hurdles_races(policy, seeds, {{"rules", rules}});
+    if (wanted("golf")) report["golf_paper"][policy] = golf_shots(policy, seeds);
   }
   if (wanted("javelin")) report["javelin_flight"] = javelin_flight(seeds);
+  if (wanted("golf")) {
+    std::vector<std::string> golfers = o.policies;
+    if (std::find(golfers.begin(), golfers.end(), "scripted") == golfers.end())
+      golfers.push_back("scripted");  // golf has a scripted putter
+    for (const auto& policy : golfers) report["golf"][policy] = golf_holes(policy, seeds);
+  }
   if (o.speed) {
     const core::ModelSpec& smpl = core::load_humanoid(core::HumanoidKind::Smpl);
-    for (const char* sport : {"long_jump", "high_jump"})
+    for (const char* sport : {"long_jump", "high_jump", "golf"})
       if (wanted(sport))
         report["speed_competition_8"][sport] =
             speed_vs_bare(sport, smpl, o.seconds, o.repeats, 45, "competition_8");
@@ -127,6 +200,26 @@ void print_athletics_report(const nlohmann::json& r) {
                   v["leap_over_ci95"][1].get<double>(), v["endings"].dump().c_str());
   print_javelin_report(r);
   if (r.contains("hurdles")) print_hurdles_report(r["hurdles"]);
+  if (r.contains("golf")) {
+    std::printf("golf (official, one hole from U[1, 3] m, 20 s, max 6 strokes):\n");
+    for (const auto& [policy, v] : r["golf"].items())
+      std::printf(
+          "  %-8s hit %.2f [%.2f, %.2f]  first putt holed %.2f [%.2f, %.2f], mean %.2f m from the "
+          "hole  holed %.2f [%.2f, %.2f] in %.2f strokes\n",
+          policy.c_str(), v["hit_rate"].get<double>(), v["hit_ci95"][0].get<double>(),
+          v["hit_ci95"][1].get<double>(), v["first_putt_holed_rate"].get<double>(),
+          v["first_putt_holed_ci95"][0].get<double>(), v["first_putt_holed_ci95"][1].get<double>(),
+          v["mean_first_putt_distance_m"].get<double>(), v["holed_rate"].get<double>(),
+          v["holed_ci95"][0].get<double>(), v["holed_ci95"][1].get<double>(),
+          v["mean_strokes_when_holed"].get<double>());
+    std::printf("golf (paper, the seed's shot):\n");
+    for (const auto& [policy, v] : r["golf_paper"].items())
+      std::printf("  %-8s hit %.2f [%.2f, %.2f]  success %.2f [%.2f, %.2f]  mean stop %.2f m  %s\n",
+                  policy.c_str(), v["hit_rate"].get<double>(), v["hit_ci95"][0].get<double>(),
+                  v["hit_ci95"][1].get<double>(), v["success_rate"].get<double>(),
+                  v["success_ci95"][0].get<double>(), v["success_ci95"][1].get<double>(),
+                  v["mean_stop_distance_m"].get<double>(), v["endings"].dump().c_str());
+  }
   if (!r.contains("speed_competition_8")) return;
   for (const auto& [sport, v] : r["speed_competition_8"].items())
     std::printf(

@@ -21,6 +21,7 @@ namespace olympics::sports {
   X(high_jump)             \
   X(javelin)               \
   X(hurdles)               \
+  X(golf)                  \
   /* the list's end */
 // clang-format on
 

@@ -9,7 +9,7 @@ BenchCommand athletics_command(CLI::App& app) {
   BenchCommand c(
       app, "athletics",
       "long jump marks and fouls, high-jump leap-over rate per height, javelin valid rate and "
-      "mark, hurdles completion, time and knocks, ticks/s");
+      "mark, hurdles completion, time and knocks, golf hit and holed rates, ticks/s");
   auto o = std::make_shared<AthleticsBenchOptions>();
   auto& cli = c.cli();
   cli.add_option("--episodes", o->episodes, "episodes per policy, event and height (seeds 1..N)")
@@ -17,9 +17,9 @@ BenchCommand athletics_command(CLI::App& app) {
   add_seeds_option(cli, o->seeds, "athletics");
   cli.add_option("--policies", o->policies, "policies (comma-separated)")->delimiter(',');
   cli.add_option("--events", o->events,
-                 "events (comma-separated): long_jump, high_jump, javelin, hurdles")
+                 "events (comma-separated): long_jump, high_jump, javelin, hurdles, golf")
       ->delimiter(',')
-      ->check(CLI::IsMember({"long_jump", "high_jump", "javelin", "hurdles"}));
+      ->check(CLI::IsMember({"long_jump", "high_jump", "javelin", "hurdles", "golf"}));
   cli.add_flag("--no-speed{false}", o->speed, "skip the competition_8 ticks/s measurement");
   cli.add_option("--seconds", o->seconds, "wall seconds per speed measurement")
       ->check(CLI::PositiveNumber);

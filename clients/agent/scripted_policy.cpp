@@ -19,6 +19,7 @@ namespace olympics::client {
   X(basketball, basketball)            \
   X(javelin, javelin)                  \
   X(hurdles, hurdles)                  \
+  X(golf, golf)                        \
   /* the list's end */
 // clang-format on
 

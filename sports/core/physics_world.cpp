@@ -149,6 +149,10 @@ void PhysicsWorld::collide_pair(dGeomID a, dGeomID b) {
       !entity_filters_[tag_a->entity](tag_a->body, tag_b->body))
     return;
 
+  if ((a == ground_ && tag_b && tag_b->passes_ground) ||
+      (b == ground_ && tag_a && tag_a->passes_ground))
+    return;
+
   std::array<dContactGeom, 8> found;
   int max = std::min<int>(settings_.max_contacts_per_pair, static_cast<int>(found.size()));
   int n = dCollide(a, b, max, found.data(), sizeof(dContactGeom));

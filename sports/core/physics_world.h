@@ -59,6 +59,9 @@ struct GeomTag {
   // This geom's own give (a mat, sand); none: the world's contact_erp/contact_cfm. When both
   // geoms of a pair declare one, the softer (lower stiffness) holds: the mat yields, not the foot.
   std::optional<ContactSoftness> softness;
+  // The ground plane does not hold this geom (a golf ball over the hole falls through the plane
+  // onto the cup's lip and into it). Off by default: no effect on any other geom.
+  bool passes_ground = false;
   // Set by PhysicsWorld::step when this geom touched the ground plane during the step.
   std::uint8_t* ground_touch = nullptr;
 };

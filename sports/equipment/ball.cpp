@@ -21,7 +21,9 @@ BallSpec table_tennis_ball() { return {"table_tennis", 0.020, 0.0027, 0.94, 0.5,
 BallSpec soccer_ball() { return {"soccer", 0.110, 0.450, 0.865, 0.25, 0.6, 0.08}; }
 BallSpec basketball() { return {"basketball", 0.12, 0.60, 0.795, 0.5, 1.0}; }
 // No official bounce test for golf balls (SPORTS.md): 0.8 is the original's club-head restitution.
-BallSpec golf_ball() { return {"golf", 0.021, 0.046, 0.8, 0.25, 0.5}; }
+// Size and mass: the Rules of Golf's limits (Equipment Rules: at most 45.93 g, at least 42.67 mm
+// across).
+BallSpec golf_ball() { return {"golf", 0.021335, 0.04593, 0.8, 0.25, 0.5}; }
 
 Ball::Ball(core::PhysicsWorld& world, const BallSpec& spec, const Eigen::Vector3d& position,
            const Eigen::Vector3d& velocity)

@@ -57,6 +57,10 @@ class Ball {
   int entity() const { return tag_->entity; }
   // Report the ball's contacts after each step (PhysicsWorld::sensed_contacts): who touched it.
   void sense_contacts() { tag_->sensor = true; }
+  // The surface under the ball changed (a golf green, a fairway): its c_rr from now on.
+  void set_rolling_resistance(double c_rr) { spec_.rolling_resistance = c_rr; }
+  // Whether the ground plane holds the ball (false: it falls through, into a hole).
+  void set_ground_holds(bool holds) { tag_->passes_ground = !holds; }
 
   static constexpr double kAirDensity = 1.2;  // kg/m^3
 

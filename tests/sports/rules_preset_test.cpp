@@ -17,7 +17,7 @@ const nlohmann::json kOfficial = {{"rules", "official"}};
 
 const std::vector<std::string> kSports = {"tennis",  "table_tennis", "fencing",   "boxing",
                                           "soccer",  "basketball",   "long_jump", "high_jump",
-                                          "javelin", "hurdles"};
+                                          "javelin", "hurdles",      "golf"};
 
 TEST(RulesPreset, EverySportHasItPaperByDefaultAndItsOfficialValuesAreAllowed) {
   for (const auto& name : kSports) {
