@@ -198,13 +198,14 @@ class OlympicsParallelEnv(_ParallelEnvBase):
             self.agents = []
             return ({a: self._last_obs[a] for a in ended}, {a: 0.0 for a in ended},
                     {a: True for a in ended}, {a: False for a in ended},
-                    {a: {"result": self.result} for a in ended})
+                    {a: {} for a in ended})
         observations, rewards, terminations, truncations, infos = self._unpack(batch, self.agents)
         self.agents = [a for a in self.agents if not (terminations[a] or truncations[a])]
         if not self.agents:
+            # The server's record of the match is env.result, not an info: its match id and wall
+            # duration differ between two runs of one seed, and infos must not (PettingZoo's
+            # parallel_seed_test compares them; a match that ends on its first step showed it).
             self.result = self._client.wait_result(self.timeout_s)
-            for a in infos:
-                infos[a]["result"] = self.result
         return observations, rewards, terminations, truncations, infos
 
     def close(self):
