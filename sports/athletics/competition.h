@@ -25,6 +25,14 @@ void end_competition(TickOutcome& outcome, const std::vector<int>& places,
 // places by TR 25.22, reason series_complete.
 void end_horizontal_competition(TickOutcome& outcome, const std::vector<HorizontalSeries>& series);
 
+// Every athlete's series, in slot order, from a match's athletes (each with a `series` member).
+template <typename Athletes>
+std::vector<HorizontalSeries> series_of(const Athletes& athletes) {
+  std::vector<HorizontalSeries> series;
+  for (const auto& a : athletes) series.push_back(a.series);
+  return series;
+}
+
 // The call for a decided attempt of a horizontal event at match time `t`: "mark" with its mark,
 // or "foul" with its reason, and which attempt it was.
 nlohmann::json attempt_call(const AttemptResult& result, double t, int slot, int attempt);

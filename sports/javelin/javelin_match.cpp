@@ -186,16 +186,12 @@ void JavelinMatch::settle_tick() {
 }
 
 void JavelinMatch::finish() {
-  std::vector<athletics::HorizontalSeries> series;
-  for (const auto& a : athletes_) series.push_back(a.series);
-  athletics::end_horizontal_competition(outcome_, series);
+  athletics::end_horizontal_competition(outcome_, athletics::series_of(athletes_));
 }
 
 void JavelinMatch::on_time_limit() {
   SmplMatch::on_time_limit();
-  std::vector<athletics::HorizontalSeries> series;
-  for (const auto& a : athletes_) series.push_back(a.series);
-  outcome_.info["places"] = athletics::places(series);
+  outcome_.info["places"] = athletics::places(athletics::series_of(athletes_));
 }
 
 void JavelinMatch::write_task_observation(int slot, const HeadingFrame& frame,
