@@ -21,7 +21,8 @@ import unittest
 from server_process import BIN
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-BUILD_DIR = os.path.dirname(os.path.dirname(os.path.abspath(BIN))) + "-pip-wheel"
+# BIN is the build's bin/ folder: the wheel's build folder goes beside the build folder.
+BUILD_DIR = os.path.dirname(os.path.abspath(BIN)) + "-pip-wheel"
 
 PLAY = textwrap.dedent("""
     import json, os
@@ -48,7 +49,25 @@ def clean_environment():
         env["CMAKE_CXX_COMPILER_LAUNCHER"] = "ccache"
         env["CMAKE_C_COMPILER_LAUNCHER"] = "ccache"
         env.setdefault("CCACHE_BASEDIR", REPO)
+        # The compiler the test's build used, by the same name: scikit-build-core otherwise takes
+        # Python's (x86_64-linux-gnu-g++), and ccache counts the name, so nothing would hit.
+        for lang, var in (("CXX", "CXX"), ("C", "CC")):
+            compiler = build_cache_entry(f"CMAKE_{lang}_COMPILER")
+            if compiler and var not in env:
+                env[var] = compiler
     return env
+
+
+def build_cache_entry(name):
+    """A CMake cache entry of the test's own build folder (the one BIN belongs to), or None."""
+    try:
+        with open(os.path.join(os.path.dirname(os.path.abspath(BIN)), "CMakeCache.txt")) as f:
+            for line in f:
+                if line.startswith(name + ":"):
+                    return line.split("=", 1)[1].strip()
+    except OSError:
+        pass
+    return None
 
 
 class PipInstall(unittest.TestCase):
