@@ -20,35 +20,10 @@ fi
 tag=r$$
 net=10.$((150 + $$ % 50)).$(($$ % 250))
 bridge=br$tag
+hosts=(cell learner)
 work=$(mktemp -d /tmp/relay-test-XXXXXX)
-ns() { echo "$tag-$1"; }
-in_ns() { local h=$1; shift; ip netns exec "$(ns "$h")" "$@"; }
-cleanup() {
-  set +e
-  for h in cell learner; do
-    for pid in $(ip netns pids "$(ns "$h")" 2>/dev/null); do kill -9 "$pid" 2>/dev/null; done
-    ip netns del "$(ns "$h")" 2>/dev/null
-  done
-  ip link del "$bridge" 2>/dev/null
-  if [ "${keep_work:-0}" = 0 ]; then rm -rf "$work"; else echo "logs kept in $work"; fi
-}
-trap cleanup EXIT
-fail() { echo "FAILED: $*"; keep_work=1; exit 1; }
-ip netns add "$(ns cell)" 2>/dev/null || { echo "SKIPPED: ip netns add failed"; exit 77; }
-ip link add "$bridge" type bridge
-ip link set "$bridge" up
-i=0
-for h in cell learner; do
-  i=$((i + 1))
-  ip netns list | grep -qw "$(ns "$h")" || ip netns add "$(ns "$h")"
-  ip link add "v$tag$i" type veth peer name "p$tag$i"
-  ip link set "p$tag$i" master "$bridge" up
-  ip link set "v$tag$i" netns "$(ns "$h")"
-  in_ns "$h" ip link set lo up
-  in_ns "$h" ip addr add "$net.$((10 + i))/24" dev "v$tag$i"
-  in_ns "$h" ip link set "v$tag$i" up
-  in_ns "$h" ip route add default dev "v$tag$i"
-done
+source "$(dirname "$0")/lan.sh"
+make_lan
 cell_ip=$net.11
 
 "$bin/olympics-server" secret "$work/secret" > /dev/null
