@@ -83,6 +83,8 @@ GolfMatch::GolfMatch(const GolfRules& rules, const ModeSpec& mode, Layout layout
   club_geoms_from_ = static_cast<int>(model.bodies[hand_body_].geoms.size()) - 2;
   green_c_rr_ = rolling_resistance_for_stimp(rules_.green_stimp);
   fairway_c_rr_ = rolling_resistance_for_stimp(rules_.fairway_stimp);
+  const double fall = rules_.green_fall_deg * M_PI / 180;  // the lanes run along +x
+  slope_ = {{std::cos(fall), std::sin(fall), 0.0}, rules_.green_slope / 100};
   const equipment::BallSpec ball = rules_golf_ball();
   for (int slot = 0; slot < slot_count(); ++slot) {
     Athlete a{nullptr,
@@ -163,6 +165,10 @@ void GolfMatch::before_physics_step() {
     a.ball->set_rolling_resistance(on_green(a) ? green_c_rr_ : fairway_c_rr_);
     if (a.hole) a.hole->before_step(*a.ball);
     a.ball->prepare_step(dt);
+    if (on_green(a)) {
+      const Eigen::Vector3d pull = slope_force(*a.ball, slope_);
+      dBodyAddForce(a.ball->body(), pull.x(), pull.y(), pull.z());
+    }
     a.head_before = club_head_pose(slot);
     a.ball_before = a.ball->position();
   }

@@ -86,6 +86,7 @@ class GolfMatch : public SmplMatch {
   int hand_body_ = -1;
   int club_geoms_from_ = 0;  // the hand's geoms from this index are the club's
   double green_c_rr_ = 0, fairway_c_rr_ = 0;
+  GreenSlope slope_;  // the green's (official; every lane's falls the same way)
 };
 
 }  // namespace olympics::sports::golf
