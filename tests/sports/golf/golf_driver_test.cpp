@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "../athletics/field_event_session.h"
 #include "golf/golf_match.h"
@@ -68,6 +69,28 @@ TEST(GolfDriver, AHeadAtFortyMetresPerSecondLaunchesARestingBallAsTheImpactModel
   EXPECT_GT(v.dot(along), 50.0) << "the ball flies on along the swing";
   for (int i = 0; i < 3; ++i) s.step();
   EXPECT_EQ(m.hole_referee(0).strokes(), 1) << "the strike is a stroke";
+}
+
+// The same swing twice, on a sloping green: bit for bit the same ball and athlete afterwards.
+TEST(GolfDriver, TheSweptStrikeIsDeterministic) {
+  std::vector<double> runs[2];
+  for (auto& state : runs) {
+    Session s("golf", "solo",
+              {{"play", "official"}, {"club", "driver"}, {"distance", 5}, {"green_slope", 2}});
+    GolfMatch& m = *s.match;
+    const core::BodyState hand = m.athlete(0).body_state(m.hand_body());
+    const Eigen::Vector3d x = hand.orientation * Eigen::Vector3d::UnitX();
+    const Eigen::Vector3d along = Eigen::Vector3d(x.x(), x.y(), 0).normalized();
+    m.ball(0).set_state(m.club_head(0) + 0.2 * along, Eigen::Vector3d::Zero());
+    athletics::give_velocity(m.athlete(0), 40.0 * along);
+    for (int i = 0; i < 30; ++i) s.step();
+    ASSERT_EQ(m.hole_referee(0).strokes(), 1);
+    for (const Eigen::Vector3d& v :
+         {m.ball(0).position(), m.ball(0).velocity(), m.ball(0).angular_velocity(),
+          m.athlete(0).body_state(m.hand_body()).position})
+      state.insert(state.end(), v.data(), v.data() + 3);
+  }
+  EXPECT_EQ(runs[0], runs[1]);
 }
 
 }  // namespace
