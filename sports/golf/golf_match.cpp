@@ -276,7 +276,8 @@ void GolfMatch::settle_official(int slot, const GolfTick& t) {
       a.ball->set_state(a.lie, Eigen::Vector3d::Zero());  // stroke and distance
       break;
   }
-  reset_player(slot, address(a));  // the next stroke is addressed from the lie
+  // The next stroke is addressed from the lie: placed there, or the athlete walks there.
+  if (rules_.placed_at_address) reset_player(slot, address(a));
 }
 
 void GolfMatch::settle_paper(int slot, const GolfTick& t) {

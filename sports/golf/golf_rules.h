@@ -25,6 +25,9 @@ struct GolfRules {
   // Where a stroke is addressed from: the athlete is placed facing the hole with the ball
   // `address_side` m to its right and `address_ahead` m ahead of its root (a face-on putter).
   double address_side = 0.38, address_ahead = -0.17;
+  // Whether the athlete is placed at address again after each stroke comes to rest (false: it
+  // is placed for the first stroke only and walks to its ball for the others).
+  bool placed_at_address = true;
   // Paper: the target `U(0, max_target)` m to the athlete's left of the ball (the seed's 0-20 m).
   double max_target = 20.0;
   double lane_spacing = 5.0;  // m between the athletes' lanes (paper: along x; official: along y)

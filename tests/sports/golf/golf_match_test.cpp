@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "../athletics/field_event_session.h"
@@ -134,6 +135,37 @@ TEST(GolfMatch, ASlopingGreenBreaksThePuttAndAFlatOneDoesNot) {
   EXPECT_NEAR(end_y[0], 0.0, 1e-3) << "flat: straight";
   EXPECT_GT(end_y[1], 0.05) << "3% falling left: it breaks left";
   std::printf("a 1.2 m/s roll on a green falling 3%% to the left ends %.3f m left\n", end_y[1]);
+}
+
+TEST(GolfMatch, WithAddressWalkTheAthleteIsPlacedOnlyForTheFirstStroke) {
+  // The same stroke, placed or walking: at rest, "placed" puts the athlete beside the ball;
+  // "walk" leaves it where it stood (a policy walks it there).
+  for (const std::string address : {"placed", "walk"}) {
+    Session s("golf", "solo", {{"rules", "official"}, {"address", address}});
+    GolfMatch& m = *s.match;
+    const Eigen::Vector3d first = m.athlete(0).body_state(0).position;
+    EXPECT_NEAR((first - m.ball(0).position()).head<2>().norm(),
+                std::hypot(m.rules().address_side, m.rules().address_ahead), 0.05)
+        << address << ": placed for the first stroke";
+    strike(m, 0);
+    Eigen::Vector3d before_rest = first;
+    nlohmann::json rest;
+    for (int i = 0; i < 600 && rest.is_null(); ++i) {
+      before_rest = m.athlete(0).body_state(0).position;
+      s.step();
+      for (const auto& e : m.outcome().info["events"])
+        if (e["call"] == "at_rest") rest = e;
+    }
+    ASSERT_FALSE(rest.is_null()) << address;
+    const Eigen::Vector3d after = m.athlete(0).body_state(0).position;
+    const double to_ball = (after - m.ball(0).position()).head<2>().norm();
+    if (address == "placed") {
+      EXPECT_NEAR(to_ball, std::hypot(m.rules().address_side, m.rules().address_ahead), 0.05);
+    } else {
+      EXPECT_LT((after - before_rest).norm(), 0.05) << "not moved by the referee";
+      EXPECT_GT(to_ball, 0.6) << "the ball rolled away from it";
+    }
+  }
 }
 
 }  // namespace
