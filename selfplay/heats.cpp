@@ -32,11 +32,13 @@ void check_ranked_tournament(const std::string& mode, const std::string& format,
   if (seats < 2)
     throw std::invalid_argument("--mode " + mode + " seats " + std::to_string(seats) +
                                 " entrant: nothing to rank; choose competition_2 .. competition_8");
-  if (seats > 2 && format != "round-robin" && format != "double-round-robin")
+  if (seats > 2 && format != "round-robin" && format != "double-round-robin" && format != "swiss" &&
+      format != "knockout")
     throw std::invalid_argument(
         "--mode " + mode + " ranks " + std::to_string(seats) +
         " entrants in each match: it plays --format round-robin (heats until every entrant has "
-        "met every other) or double-round-robin (twice); " +
+        "met every other), double-round-robin (twice), swiss (heats drawn by standing) or "
+        "knockout (the top places of each heat go through); " +
         format + " pairs two entrants per game");
   if (entrants < seats)
     throw std::invalid_argument("--mode " + mode + " seats " + std::to_string(seats) +

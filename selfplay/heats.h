@@ -16,8 +16,8 @@ namespace olympics::selfplay {
 int ranked_seats(const std::string& mode);
 
 // Refuses, saying what to change, a tournament a ranked mode cannot play: formats other than
-// round-robin and double-round-robin for N > 2 (swiss and knockout pair two), or fewer entrants
-// than seats. Two-team modes pass.
+// round-robin, double-round-robin, swiss and knockout for N > 2 (self-play pairs two), or fewer
+// entrants than seats. Two-team modes pass.
 void check_ranked_tournament(const std::string& mode, const std::string& format, int entrants);
 
 // "Every entrant meets every other in some heat", `meetings` times (1: round-robin, 2: double):

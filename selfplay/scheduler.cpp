@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "heat_rounds.h"
 #include "heats.h"
 
 namespace olympics::selfplay {
@@ -25,14 +26,23 @@ class TournamentScheduler : public Scheduler {
   }
 
  private:
-  // Heats of N for a ranked competition_N: every entrant meets every other in some heat (twice:
-  // double-round-robin), all heats scheduled at once.
+  // Heats of N for a ranked competition_N: round-robin (every entrant meets every other in some
+  // heat; twice: double-round-robin), all heats scheduled at once; swiss and knockout a round of
+  // heats at a time, from the places of the rounds before (heat_rounds.h).
   static Verdict schedule_heats(const TournamentSpec& spec, const std::vector<Game>& games,
                                 int seats, std::vector<Pairing>& out) {
-    check_ranked_tournament(spec.mode, spec.format, static_cast<int>(spec.entrants.size()));
+    const int entrants = static_cast<int>(spec.entrants.size());
+    check_ranked_tournament(spec.mode, spec.format, entrants);
+    if (spec.format == "swiss" || spec.format == "knockout") {
+      std::vector<HeatResult> results;
+      for (const auto& g : games)
+        if (g.ranked()) results.push_back({g.round, g.seats, g.places});
+      out = spec.format == "swiss" ? swiss_heats_round(entrants, seats, results)
+                                   : knockout_heats_round(entrants, seats, results);
+      return out.empty() ? Verdict::Finished : Verdict::Added;
+    }
     if (!games.empty()) return Verdict::Finished;
-    out = heats(static_cast<int>(spec.entrants.size()), seats, spec.seed,
-                spec.format == "double-round-robin" ? 2 : 1);
+    out = heats(entrants, seats, spec.seed, spec.format == "double-round-robin" ? 2 : 1);
     return Verdict::Added;
   }
 

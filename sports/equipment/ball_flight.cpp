@@ -110,8 +110,8 @@ void BallFlight::step(double dt, std::span<const ArenaBox> boxes, std::span<cons
     for (const MovingDisc& m : discs) {
       const Pose from = interpolate(m.from, m.to, u0);
       auto hit = sweep_ball_disc(p0, p1, r, m.disc, from, m.to, remaining, kTolerance);
-      if (hit && hit->t < best.s && approaching(hit->t, hit->normal, hit->disc_point_velocity))
-        best = {hit->t,        SurfaceKind::Disc, m.id, hit->normal, hit->disc_point_velocity,
+      if (hit && hit->t < best.s && approaching(hit->t, hit->normal, hit->surface_point_velocity))
+        best = {hit->t,        SurfaceKind::Disc, m.id, hit->normal, hit->surface_point_velocity,
                 m.restitution, m.friction};
     }
 

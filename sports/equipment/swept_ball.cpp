@@ -19,6 +19,61 @@ Eigen::Vector3d closest_point(const Eigen::Vector3d& q, const Disc& disc, const 
   return pose.position + pose.orientation * Eigen::Vector3d(radial.x(), radial.y(), z);
 }
 
+// Closest point of the solid box to q, in world coordinates.
+Eigen::Vector3d closest_point(const Eigen::Vector3d& q, const Box& box, const Pose& pose) {
+  const Eigen::Vector3d local = pose.orientation.conjugate() * (q - pose.position);
+  const Eigen::Vector3d clamped = local.cwiseMax(-box.half_extents).cwiseMin(box.half_extents);
+  return pose.position + pose.orientation * clamped;
+}
+
+// The normal where no closest point is apart from the centre (the centre inside the solid).
+Eigen::Vector3d fallback_normal(const Disc&, const Pose& pose) {
+  return pose.orientation * Eigen::Vector3d::UnitZ();
+}
+Eigen::Vector3d fallback_normal(const Box&, const Pose& pose) {
+  return pose.orientation * Eigen::Vector3d::UnitX();
+}
+
+double reach(const Disc& disc) { return std::hypot(disc.radius, disc.half_thickness); }
+double reach(const Box& box) { return box.half_extents.norm(); }
+
+// Conservative advancement of the ball against a moving solid (a Disc or a Box).
+template <typename Solid>
+std::optional<SweptHit> sweep(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+                              double ball_radius, const Solid& solid, const Pose& pose0,
+                              const Pose& pose1, double dt, double tolerance) {
+  // Bound on how fast the distance can shrink: the ball's speed plus the fastest point of the
+  // solid (centre speed + spin x the solid's farthest reach).
+  const Eigen::Vector3d ball_v = (p1 - p0) / dt;
+  const Eigen::Vector3d centre_v = (pose1.position - pose0.position) / dt;
+  const Eigen::AngleAxisd turn(pose0.orientation.conjugate() * pose1.orientation);
+  const double spin = std::abs(turn.angle()) / dt;
+  const double closing_bound =
+      (ball_v.norm() + centre_v.norm() + spin * reach(solid)) * dt;  // per unit t
+  double t = 0;
+  for (int iteration = 0; iteration < 1000000; ++iteration) {  // grazing contacts converge slowly
+    const Pose pose = interpolate(pose0, pose1, t);
+    const Eigen::Vector3d centre = p0 + t * (p1 - p0);
+    const Eigen::Vector3d on_solid = closest_point(centre, solid, pose);
+    const double d = (centre - on_solid).norm() - ball_radius;
+    if (d <= tolerance) {
+      SweptHit hit;
+      hit.t = t;
+      hit.ball_centre = centre;
+      hit.normal = (centre - on_solid).norm() > 1e-12 ? (centre - on_solid).normalized()
+                                                      : fallback_normal(solid, pose);
+      // The solid's velocity at the contact point: its centre's plus spin x lever.
+      const Eigen::Vector3d omega = pose0.orientation * (turn.axis() * (turn.angle() / dt));
+      hit.surface_point_velocity = centre_v + omega.cross(on_solid - pose.position);
+      return hit;
+    }
+    if (closing_bound <= 0) return std::nullopt;
+    t += d / closing_bound;  // cannot pass the first contact
+    if (t > 1) return std::nullopt;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 double ball_disc_distance(const Eigen::Vector3d& centre, double ball_radius, const Disc& disc,
@@ -29,36 +84,18 @@ double ball_disc_distance(const Eigen::Vector3d& centre, double ball_radius, con
 std::optional<SweptHit> sweep_ball_disc(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
                                         double ball_radius, const Disc& disc, const Pose& pose0,
                                         const Pose& pose1, double dt, double tolerance) {
-  // Bound on how fast the distance can shrink: the ball's speed plus the fastest point of the
-  // disc (centre speed + spin x the disc's farthest reach).
-  const Eigen::Vector3d ball_v = (p1 - p0) / dt;
-  const Eigen::Vector3d centre_v = (pose1.position - pose0.position) / dt;
-  const Eigen::AngleAxisd turn(pose0.orientation.conjugate() * pose1.orientation);
-  const double spin = std::abs(turn.angle()) / dt;
-  const double reach = std::hypot(disc.radius, disc.half_thickness);
-  const double closing_bound = (ball_v.norm() + centre_v.norm() + spin * reach) * dt;  // per unit t
-  double t = 0;
-  for (int iteration = 0; iteration < 1000000; ++iteration) {  // grazing contacts converge slowly
-    const Pose pose = interpolate(pose0, pose1, t);
-    const Eigen::Vector3d centre = p0 + t * (p1 - p0);
-    const double d = ball_disc_distance(centre, ball_radius, disc, pose);
-    if (d <= tolerance) {
-      SweptHit hit;
-      hit.t = t;
-      hit.ball_centre = centre;
-      const Eigen::Vector3d on_disc = closest_point(centre, disc, pose);
-      hit.normal = (centre - on_disc).norm() > 1e-12 ? (centre - on_disc).normalized()
-                                                     : pose.orientation * Eigen::Vector3d::UnitZ();
-      // The disc's velocity at the contact point: its centre's plus spin x lever.
-      const Eigen::Vector3d omega = pose0.orientation * (turn.axis() * (turn.angle() / dt));
-      hit.disc_point_velocity = centre_v + omega.cross(on_disc - pose.position);
-      return hit;
-    }
-    if (closing_bound <= 0) return std::nullopt;
-    t += d / closing_bound;  // cannot pass the first contact
-    if (t > 1) return std::nullopt;
-  }
-  return std::nullopt;
+  return sweep(p0, p1, ball_radius, disc, pose0, pose1, dt, tolerance);
+}
+
+double ball_box_distance(const Eigen::Vector3d& centre, double ball_radius, const Box& box,
+                         const Pose& pose) {
+  return (centre - closest_point(centre, box, pose)).norm() - ball_radius;
+}
+
+std::optional<SweptHit> sweep_ball_box(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+                                       double ball_radius, const Box& box, const Pose& pose0,
+                                       const Pose& pose1, double dt, double tolerance) {
+  return sweep(p0, p1, ball_radius, box, pose0, pose1, dt, tolerance);
 }
 
 Eigen::Vector3d bounce(const Eigen::Vector3d& ball_velocity,

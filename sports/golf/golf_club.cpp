@@ -9,11 +9,13 @@ constexpr double kShaftRadius = 0.008;
 
 }  // namespace
 
-ClubSpec putter() { return {"putter", 0.75, 3.0, {0.015, 0.0125, 0.05}, 0.33, 0.12, 0.8}; }
+ClubSpec putter() { return {"putter", 0.75, 3.0, {0.015, 0.0125, 0.05}, 0.33, 0.12, 0.8, 0.8}; }
 
-ClubSpec driver() { return {"driver", 1.14, 10.5, {0.025, 0.025, 0.055}, 0.20, 0.10, 0.83}; }
+ClubSpec driver() { return {"driver", 1.14, 10.5, {0.025, 0.025, 0.055}, 0.20, 0.10, 0.83, 0.8}; }
 
-ClubSpec seed_club() { return {"seed_club", 1.14, 0.0, {0.0125, 0.01, 0.025}, 0.20, 0.10, 0.8}; }
+ClubSpec seed_club() {
+  return {"seed_club", 1.14, 0.0, {0.0125, 0.01, 0.025}, 0.20, 0.10, 0.8, 0.8};
+}
 
 equipment::EquipmentSpec club_equipment(const ClubSpec& club) {
   equipment::EquipmentSpec e;
@@ -33,12 +35,10 @@ equipment::EquipmentSpec club_equipment(const ClubSpec& club) {
   h.name = kClubHeadGeom;
   h.shape = core::GeomShape::Box;
   h.pos = club_head_offset(club);
-  // Loft: the face (+x) turned up, about the toe-heel axis (z), towards the hand (+y).
-  h.quat =
-      Eigen::Quaterniond(Eigen::AngleAxisd(club.loft_deg * M_PI / 180, Eigen::Vector3d::UnitZ()));
+  h.quat = club_head_orientation(club);
   h.half_extents = club.head_half;
   h.mass = club.head_mass;
-  h.friction = 0.8;
+  h.friction = club.friction;
   e.geoms = {s, h};
   e.restitution = club.restitution;
   e.friction = 0.8;

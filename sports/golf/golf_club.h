@@ -9,7 +9,8 @@
 // head about z.
 #pragma once
 
-#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cmath>
 #include <string>
 
 #include "equipment/equipment.h"
@@ -24,6 +25,7 @@ struct ClubSpec {
   double head_mass = 0;                                 // kg
   double shaft_mass = 0;   // kg (grip and shaft, a capsule of radius 8 mm)
   double restitution = 0;  // of the head against a ball (its coefficient of restitution)
+  double friction = 0.8;   // of the face against a ball
 };
 
 // A putter (USGA/R&A Equipment Rules: no length limit for a putter, >= 18 in overall): a 0.10 m
@@ -44,5 +46,12 @@ equipment::EquipmentSpec club_equipment(const ClubSpec& club);
 
 // The head's centre in the hand frame.
 inline Eigen::Vector3d club_head_offset(const ClubSpec& club) { return {0, -club.length, 0}; }
+
+// The head's orientation in the hand frame. Loft: the face (+x) turned up, about the toe-heel
+// axis (z), towards the hand (+y).
+inline Eigen::Quaterniond club_head_orientation(const ClubSpec& club) {
+  return Eigen::Quaterniond(
+      Eigen::AngleAxisd(club.loft_deg * M_PI / 180, Eigen::Vector3d::UnitZ()));
+}
 
 }  // namespace olympics::sports::golf

@@ -7,6 +7,7 @@ namespace {
 
 constexpr int kWalls = 24;
 constexpr double kWallThickness = 0.01;
+constexpr double kHeldSpeed = 0.01;  // m/s: slower, a ball on a gentle slope is held at rest
 
 }  // namespace
 
@@ -15,6 +16,17 @@ double rolling_resistance_for_stimp(double stimp) {
   // v^2 = 2 a d.
   const double decel = kStimpSpeed * kStimpSpeed / (2 * stimp);
   return decel * 21.0 / 25.0 / 9.81;
+}
+
+Eigen::Vector3d slope_force(const equipment::Ball& ball, const GreenSlope& slope) {
+  if (slope.grade <= 0 || !ball.on_ground()) return Eigen::Vector3d::Zero();
+  constexpr double g = 9.81;
+  const double pull = ball.spec().mass * g * slope_sine(slope.grade);
+  const Eigen::Vector3d v = ball.velocity();
+  const bool at_rest = Eigen::Vector2d(v.x(), v.y()).norm() < kHeldSpeed;
+  const double holding = (5.0 / 3.0) * ball.spec().mass * ball.spec().rolling_resistance * g;
+  if (at_rest && pull <= holding) return Eigen::Vector3d::Zero();
+  return pull * slope.downhill;
 }
 
 Hole::Hole(core::PhysicsWorld& world, const HoleSpec& spec) : spec_(spec) {

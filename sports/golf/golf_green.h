@@ -11,6 +11,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 
 #include "core/physics_world.h"
 #include "equipment/ball.h"
@@ -22,6 +23,25 @@ inline constexpr double kStimpSpeed = 1.83;  // m/s off the stimpmeter's ramp
 // The c_rr that makes a ball of `ball` roll `stimp` metres from kStimpSpeed on a plane (a
 // solid ball: the force at its centre slows it by 21/25 of its nominal decel; see ball.cpp).
 double rolling_resistance_for_stimp(double stimp);
+
+// A green that is not flat: a plane falling `grade` (rise over run: 0.02 is a 2% slope) along
+// `downhill` (unit, horizontal). The physics' ground stays level; the slope acts on a ball on
+// the ground as the along-slope part of gravity, m g sin(theta) at its centre, which the
+// ground's friction turns into rolling: (5/7) g sin(theta) for a solid ball, against the
+// rolling resistance's (25/21) c_rr g. (The normal force's cos(theta) is left out: 0.02% at 2%.)
+// A ball at rest stays at rest while the slope's force is no more than the rolling resistance's,
+// (5/3) m c_rr g: sin(theta) <= 7.8% on a stimp-10 green (greens' hole locations rarely exceed
+// 3%). A ball in the air feels none of it.
+struct GreenSlope {
+  Eigen::Vector3d downhill = Eigen::Vector3d::UnitX();
+  double grade = 0;
+};
+
+// The slope's force on `ball` this step (zero off the ground, or held at rest).
+Eigen::Vector3d slope_force(const equipment::Ball& ball, const GreenSlope& slope);
+
+// sin(theta) of a grade.
+inline double slope_sine(double grade) { return grade / std::sqrt(1 + grade * grade); }
 
 struct HoleSpec {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();

@@ -83,10 +83,25 @@ GolfMatch::GolfMatch(const GolfRules& rules, const ModeSpec& mode, Layout layout
   club_geoms_from_ = static_cast<int>(model.bodies[hand_body_].geoms.size()) - 2;
   green_c_rr_ = rolling_resistance_for_stimp(rules_.green_stimp);
   fairway_c_rr_ = rolling_resistance_for_stimp(rules_.fairway_stimp);
+  const double fall = rules_.green_fall_deg * M_PI / 180;  // the lanes run along +x
+  slope_ = {{std::cos(fall), std::sin(fall), 0.0}, rules_.green_slope / 100};
   const equipment::BallSpec ball = rules_golf_ball();
   for (int slot = 0; slot < slot_count(); ++slot) {
-    Athlete a{nullptr, nullptr, lane_origin(slot), {}, {}, {}, HoleReferee(rules_), {}, 0, 0, false,
-              0,       false};
+    Athlete a{nullptr,
+              nullptr,
+              lane_origin(slot),
+              {},
+              {},
+              {},
+              HoleReferee(rules_),
+              {},
+              0,
+              0,
+              false,
+              0,
+              false,
+              {},
+              {}};
     const Eigen::Vector3d at = a.origin + Eigen::Vector3d(0, 0, ball.radius);
     a.ball = std::make_unique<equipment::Ball>(scene().world(), ball, at);
     a.ball->sense_contacts();
@@ -133,6 +148,11 @@ Eigen::Vector3d GolfMatch::club_head(int slot) const {
   return hand.position + hand.orientation * club_head_offset(rules_.club);
 }
 
+equipment::Pose GolfMatch::club_head_pose(int slot) const {
+  const core::BodyState hand = player(slot).body_state(hand_body_);
+  return golf::club_head_pose(rules_.club, {hand.position, hand.orientation});
+}
+
 bool GolfMatch::on_green(const Athlete& a) const {
   if (!rules_.official) return false;  // the seed's ground: fairway
   return (a.ball->position() - a.target).head<2>().norm() < rules_.green_radius;
@@ -140,25 +160,45 @@ bool GolfMatch::on_green(const Athlete& a) const {
 
 void GolfMatch::before_physics_step() {
   const double dt = scene().settings().physics_dt();
-  for (Athlete& a : athletes_) {
+  for (int slot = 0; slot < slot_count(); ++slot) {
+    Athlete& a = athletes_[slot];
     a.ball->set_rolling_resistance(on_green(a) ? green_c_rr_ : fairway_c_rr_);
     if (a.hole) a.hole->before_step(*a.ball);
     a.ball->prepare_step(dt);
+    if (on_green(a)) {
+      const Eigen::Vector3d pull = slope_force(*a.ball, slope_);
+      dBodyAddForce(a.ball->body(), pull.x(), pull.y(), pull.z());
+    }
+    a.head_before = club_head_pose(slot);
+    a.ball_before = a.ball->position();
   }
 }
 
 void GolfMatch::after_physics_step(double step_start) {
+  std::vector<char> solver_struck(slot_count(), 0);
   for (const auto& c : scene().world().sensed_contacts()) {
     if (!c.sensor || !c.other) continue;
     for (int slot = 0; slot < slot_count(); ++slot) {
-      Athlete& a = athletes_[slot];
-      if (c.sensor->entity != a.ball->entity()) continue;
-      const bool club = c.other->entity == player(slot).entity() && c.other->body == hand_body_ &&
-                        c.other->geom >= club_geoms_from_;
-      if (club && !a.touched) {
-        a.touched = true;
-        a.touched_t = step_start - a.start;
+      if (c.sensor->entity != athletes_[slot].ball->entity()) continue;
+      solver_struck[slot] |= c.other->entity == player(slot).entity() &&
+                             c.other->body == hand_body_ && c.other->geom >= club_geoms_from_;
+    }
+  }
+  const double dt = scene().settings().physics_dt();
+  for (int slot = 0; slot < slot_count(); ++slot) {
+    Athlete& a = athletes_[slot];
+    bool struck = solver_struck[slot] != 0;
+    if (!struck) {  // a head too fast for the solver's contacts (swept_strike.h)
+      const auto strike = find_swept_strike(rules_.club, a.head_before, club_head_pose(slot),
+                                            a.ball_before, *a.ball, dt);
+      if (strike) {
+        apply_swept_strike(*strike, *a.ball, player(slot).ode_body(hand_body_), dt);
+        struck = true;
       }
+    }
+    if (struck && !a.touched) {
+      a.touched = true;
+      a.touched_t = step_start - a.start;
     }
   }
 }
@@ -236,7 +276,8 @@ void GolfMatch::settle_official(int slot, const GolfTick& t) {
       a.ball->set_state(a.lie, Eigen::Vector3d::Zero());  // stroke and distance
       break;
   }
-  reset_player(slot, address(a));  // the next stroke is addressed from the lie
+  // The next stroke is addressed from the lie: placed there, or the athlete walks there.
+  if (rules_.placed_at_address) reset_player(slot, address(a));
 }
 
 void GolfMatch::settle_paper(int slot, const GolfTick& t) {

@@ -12,6 +12,7 @@
 #include "golf/golf_green.h"
 #include "golf/golf_referee.h"
 #include "golf/golf_rules.h"
+#include "golf/swept_strike.h"
 
 namespace olympics::sports::golf {
 
@@ -36,6 +37,7 @@ class GolfMatch : public SmplMatch {
   const SeedReferee& seed_referee(int slot) const { return athletes_[slot].seed_ref; }
   Eigen::Vector3d target(int slot) const { return athletes_[slot].target; }
   Eigen::Vector3d club_head(int slot) const;
+  equipment::Pose club_head_pose(int slot) const;
   core::Humanoid& athlete(int slot) { return player(slot); }
   int hand_body() const { return hand_body_; }
 
@@ -54,6 +56,9 @@ class GolfMatch : public SmplMatch {
     bool touched = false;  // the club touched the ball in this tick
     double touched_t = 0;
     bool over = false;
+    // At the start of the physics step: for the swept strike of a fast head (swept_strike.h).
+    equipment::Pose head_before;
+    Eigen::Vector3d ball_before = Eigen::Vector3d::Zero();
   };
 
   void write_task_observation(int slot, const HeadingFrame& frame,
@@ -81,6 +86,7 @@ class GolfMatch : public SmplMatch {
   int hand_body_ = -1;
   int club_geoms_from_ = 0;  // the hand's geoms from this index are the club's
   double green_c_rr_ = 0, fairway_c_rr_ = 0;
+  GreenSlope slope_;  // the green's (official; every lane's falls the same way)
 };
 
 }  // namespace olympics::sports::golf

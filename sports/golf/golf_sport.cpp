@@ -29,6 +29,19 @@ std::vector<SettingSpec> GolfSport::settings() const {
       SettingSpec::number("max_target", 20.0, "m: the seed's target is drawn 0 to this far", 1, 40),
       SettingSpec::number("green_stimp", 3.05,
                           "m a ball rolls on the green from 1.83 m/s (stimp 10 = 3.05 m)", 1, 5),
+      SettingSpec::number("green_slope", 0.0,
+                          "percent the green falls (official; 0: flat; a ball rolls downhill as "
+                          "gravity and rolling resistance say)",
+                          0, 10),
+      SettingSpec::number("green_fall", 0.0,
+                          "degrees: where the green falls, counterclockwise from the line to the "
+                          "hole (0: downhill putt, 90: breaks left, 180: uphill)",
+                          -180, 360),
+      SettingSpec::choice("address", "placed",
+                          "official: after a stroke comes to rest the athlete is placed at "
+                          "address beside the ball (\"placed\"), or walks to it (\"walk\": "
+                          "placed for the first stroke only)",
+                          {"placed", "walk"}),
       SettingSpec::number("max_strokes", 6,
                           "Rule 21.2: the maximum score; a hole not finished scores it", 1, 12),
       SettingSpec::number("hole_s", 60.0, "s an athlete has to hole out", 5, 300),
@@ -44,6 +57,9 @@ GolfRules GolfSport::rules(const nlohmann::json& options) const {
   r.distance = s.at("distance");
   r.max_target = s.at("max_target");
   r.green_stimp = s.at("green_stimp");
+  r.green_slope = s.at("green_slope");
+  r.green_fall_deg = s.at("green_fall");
+  r.placed_at_address = s.at("address") == "placed";
   r.max_strokes = s.at("max_strokes");
   r.hole_s = s.at("hole_s");
   return r;

@@ -1,6 +1,7 @@
 #include "high_jump/high_jump_match.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "athletics/competition.h"
 #include "core/humanoid_assets.h"
@@ -184,13 +185,27 @@ void HighJumpMatch::extra_state(std::vector<double>& values) const {
 }
 
 void HighJumpMatch::describe_scene(SceneBuilder& scene) const {
-  scene.set_ground(rules_.bar_x + 8, rules_.bar_y + slot_count() * rules_.lane_spacing + 4,
-                   "#b5653c");
+  double half_y = rules_.bar_y + slot_count() * rules_.lane_spacing + 4;
+  if (rules_.official)  // the run-up fans reach runup_radius to either side of the bars
+    half_y = std::max(
+        half_y, rules_.bar_y + (slot_count() - 1) * rules_.lane_spacing + rules_.runup_radius + 1);
+  scene.set_ground(rules_.bar_x + 8, half_y, "#b5653c");
   for (int slot = 0; slot < slot_count(); ++slot) {
     if (rules_.landing_mat) {
       const athletics::Footprint m = mat(slot);
       scene.add_box(-1, {0.5 * (m.x_lo + m.x_hi), bar_y(slot), 0.5 * kMatHeight},
                     {0.5 * kMatDepth, 0.5 * kMatWidth, 0.5 * kMatHeight}, "landing_mat", "#2f5fa8");
+    }
+    if (rules_.official) {  // the run-up fan: its arc in 32 chords, and the bar's plane
+      constexpr int kChords = 32;
+      const Eigen::Vector3d c = bar_centre(slot);
+      auto on_arc = [&](int i) {
+        const double a = M_PI / 2 + M_PI * i / kChords;  // from the left round to the right
+        return Eigen::Vector3d(c.x() + rules_.runup_radius * std::cos(a),
+                               c.y() + rules_.runup_radius * std::sin(a), 0.002);
+      };
+      for (int i = 0; i < kChords; ++i) scene.add_line(on_arc(i), on_arc(i + 1), "runup");
+      scene.add_line(on_arc(0), on_arc(kChords), "runup");
     }
     for (int side : {-1, 1}) {
       const Eigen::Vector3d foot{rules_.bar_x, bar_y(slot) + side * 0.5 * rules_.upright_gap, 0};

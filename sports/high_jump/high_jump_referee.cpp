@@ -25,9 +25,14 @@ std::optional<BarDecision> HighJumpReferee::official_step(const BarStep& s) {
     if (landed_at_ && s.t - *landed_at_ >= rules_.settle_s) return decide(true, "");
     return std::nullopt;
   }
+  if (!in_runup(s.root)) return decide(false, "left_area");
   if (s.down) return decide(false, "fell");
   if (s.t > rules_.attempt_s) return decide(false, "time");
   return std::nullopt;
+}
+
+bool HighJumpReferee::in_runup(const Eigen::Vector3d& root) const {
+  return root.x() >= 0 || root.head<2>().norm() <= rules_.runup_radius;
 }
 
 std::optional<BarDecision> HighJumpReferee::paper_step(const BarStep& s) {

@@ -4,9 +4,10 @@
 // Official (TR 27.2): a failure is the bar dislodged (it left its supports), touching the ground
 // or the landing area beyond the bar's plane before going over it (the root crossing the plane
 // above the bar, between the uprights), or the time per attempt passing (and, for a simulation,
-// a fall before the jump); a clearance is going over and resting on the landing area settle_s
-// with the bar still up. Paper (the seed): ends on a fall, the bar displaced or leaving the
-// run-up area; a clearance is every body past the plane by 0.1 m with the bar up.
+// a fall before the jump, and leaving the fan-shaped run-up before going over); a clearance is
+// going over and resting on the landing area settle_s with the bar still up. Paper (the seed):
+// ends on a fall, the bar displaced or leaving the run-up area (our rectangle: the seed gives no
+// bounds); a clearance is every body past the plane by 0.1 m with the bar up.
 #pragma once
 
 #include <Eigen/Core>
@@ -39,6 +40,9 @@ class HighJumpReferee {
   explicit HighJumpReferee(const HighJumpRules& rules) : rules_(rules) {}
   std::optional<BarDecision> step(const BarStep& s);
   bool decided() const { return decided_; }
+  // Official: is a root (relative to the bar's centre on the ground) inside the run-up fan, or
+  // past the bar's plane (where the landing area's own rule applies)?
+  bool in_runup(const Eigen::Vector3d& root) const;
   bool over() const { return over_; }  // official: the root went over the bar
 
  private:

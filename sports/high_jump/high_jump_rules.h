@@ -16,6 +16,12 @@ struct HighJumpRules {
   // <= 2 kg, 30 mm round, 4.00 m, on 40 x 60 mm supports).
   double bar_length = 4.1, bar_radius = 0.025, bar_mass = 8.0;
   double support_depth = 0.1, support_length = 0.1;  // m across (x) and along (y) the bar
+  // Official: the run-up, a fan-shaped area in front of the bar (TR 27.3: a runway of at least
+  // 15 m, 25 m at the major international competitions; the Facilities Manual draws it as a
+  // semicircle round the bar's centre): here the half disc of this radius on the approach side
+  // of the bar's plane, centred on the bar's centre on the ground. Leaving it before going over
+  // is a failure (left_area). The seed's start mark is 20.9 m from the bar's centre.
+  double runup_radius = 25.0;
   bool landing_mat = false;  // the 6 x 4 x 0.7 m soft mat behind the bar (TR 27.9); the seed: none
   std::vector<double> heights{1.0};      // m, the bar's top, in the order they are jumped
   int tries_per_height = 1;              // the seed's episode: 1; TR 26.4: 3

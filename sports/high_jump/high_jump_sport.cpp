@@ -1,5 +1,9 @@
 #include "high_jump/high_jump_sport.h"
 
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
 #include "athletics/competition.h"
 #include "high_jump/high_jump_match.h"
 #include "high_jump/high_jump_rewards.h"
@@ -29,6 +33,11 @@ std::vector<SettingSpec> HighJumpSport::settings() const {
                           "the seed has none; \"mat\": 6 x 4 x 0.7 m of soft foam behind the bar",
                           {"none", "mat"})
           .with_official("mat"),
+      SettingSpec::number("runup_radius", 25.0,
+                          "m, official: the fan-shaped run-up, a half disc of this radius in "
+                          "front of the bar's centre (TR 27.3: at least 15 m, 25 m at the major "
+                          "competitions); leaving it before going over is a failure",
+                          15, 60),
       SettingSpec::number("bar_height", 1.0,
                           "m, the first height (the seed trains at 0.5, 1.0, 1.5 and 2.0)", 0.3,
                           2.5),
@@ -55,6 +64,13 @@ HighJumpRules HighJumpSport::rules(const nlohmann::json& options) const {
     r.support_depth = 0.04, r.support_length = 0.06;
   }
   r.landing_mat = s.at("landing_mat") == "mat";
+  r.runup_radius = s.at("runup_radius");
+  const double start_distance = std::hypot(r.bar_x, r.bar_y);  // the start mark's, from the bar
+  if (r.official && r.runup_radius < start_distance)
+    throw std::invalid_argument("high_jump: runup_radius " + std::to_string(r.runup_radius) +
+                                " m leaves the start mark outside the run-up (it is " +
+                                std::to_string(start_distance) +
+                                " m from the bar's centre); set runup_radius to at least that");
   const double first = s.at("bar_height"), raise = s.at("bar_raise");
   const int count = raise > 0 ? static_cast<int>(s.at("heights")) : 1;
   r.heights.clear();

@@ -102,9 +102,11 @@ TEST(RankedTournament, ModesAndRefusals) {
               std::string::npos)
         << e.what();
   }
+  EXPECT_NO_THROW(check_ranked_tournament("competition_4", "swiss", 8));
+  EXPECT_NO_THROW(check_ranked_tournament("competition_4", "knockout", 8));
   try {
-    check_ranked_tournament("competition_4", "swiss", 8);
-    ADD_FAILURE() << "swiss pairs two";
+    check_ranked_tournament("competition_4", "selfplay", 8);
+    ADD_FAILURE() << "self-play pairs two";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("--format round-robin"), std::string::npos) << e.what();
   }
@@ -140,9 +142,9 @@ TEST(RankedTournament, TheSchedulerSeatsHeatsOnceThenFinishes) {
   for (auto& g : games) g.status = GameStatus::Done, g.places = {1, 2, 3, 4};
   EXPECT_EQ(scheduler->schedule(spec, games, more), Scheduler::Verdict::Finished);
   EXPECT_TRUE(more.empty());
-  // Swiss cannot seat four.
-  auto swiss = spec_of(6, "competition_4", "swiss");
-  EXPECT_THROW(scheduler->schedule(swiss, {}, out), std::invalid_argument);
+  // Nor can a format that pairs two.
+  auto pairs_two = spec_of(6, "competition_4", "selfplay");
+  EXPECT_THROW(scheduler->schedule(pairs_two, {}, out), std::invalid_argument);
 }
 
 TEST(RankedTournament, CompetitionsOfTwoPairAsTwoTeamsDoEachARankedFixture) {

@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+
 #include "../athletics/field_event_session.h"
 #include "golf/golf_sport.h"
 
@@ -113,6 +116,56 @@ TEST(GolfMatch, PaperIsTheSeedsShot) {
   EXPECT_FALSE(end["hit"].get<bool>());
   EXPECT_FALSE(end["success"].get<bool>());
   EXPECT_TRUE(m.outcome().match_over);
+}
+
+TEST(GolfMatch, ASlopingGreenBreaksThePuttAndAFlatOneDoesNot) {
+  // A 1.2 m/s roll towards the hole 2 m away (it stops about 1.3 m out) on a green falling 3%
+  // to the left: it ends left of the line, as far as the ball on its own (golf_green_test) says.
+  double end_y[2];
+  for (int sloped = 0; sloped < 2; ++sloped) {
+    Session s("golf", "solo",
+              {{"rules", "official"}, {"green_slope", sloped ? 3.0 : 0.0}, {"green_fall", 90}});
+    GolfMatch& m = *s.match;
+    const Eigen::Vector3d v(1.2, 0, 0);
+    m.ball(0).set_state(m.ball(0).position(), v, m.ball(0).rolling_spin(v));
+    for (int i = 0; i < 180; ++i) s.step();  // 6 s: it stops in about 3
+    EXPECT_LT(m.ball(0).velocity().norm(), 0.01);
+    end_y[sloped] = m.ball(0).position().y();
+  }
+  EXPECT_NEAR(end_y[0], 0.0, 1e-3) << "flat: straight";
+  EXPECT_GT(end_y[1], 0.05) << "3% falling left: it breaks left";
+  std::printf("a 1.2 m/s roll on a green falling 3%% to the left ends %.3f m left\n", end_y[1]);
+}
+
+TEST(GolfMatch, WithAddressWalkTheAthleteIsPlacedOnlyForTheFirstStroke) {
+  // The same stroke, placed or walking: at rest, "placed" puts the athlete beside the ball;
+  // "walk" leaves it where it stood (a policy walks it there).
+  for (const std::string address : {"placed", "walk"}) {
+    Session s("golf", "solo", {{"rules", "official"}, {"address", address}});
+    GolfMatch& m = *s.match;
+    const Eigen::Vector3d first = m.athlete(0).body_state(0).position;
+    EXPECT_NEAR((first - m.ball(0).position()).head<2>().norm(),
+                std::hypot(m.rules().address_side, m.rules().address_ahead), 0.05)
+        << address << ": placed for the first stroke";
+    strike(m, 0);
+    Eigen::Vector3d before_rest = first;
+    nlohmann::json rest;
+    for (int i = 0; i < 600 && rest.is_null(); ++i) {
+      before_rest = m.athlete(0).body_state(0).position;
+      s.step();
+      for (const auto& e : m.outcome().info["events"])
+        if (e["call"] == "at_rest") rest = e;
+    }
+    ASSERT_FALSE(rest.is_null()) << address;
+    const Eigen::Vector3d after = m.athlete(0).body_state(0).position;
+    const double to_ball = (after - m.ball(0).position()).head<2>().norm();
+    if (address == "placed") {
+      EXPECT_NEAR(to_ball, std::hypot(m.rules().address_side, m.rules().address_ahead), 0.05);
+    } else {
+      EXPECT_LT((after - before_rest).norm(), 0.05) << "not moved by the referee";
+      EXPECT_GT(to_ball, 0.6) << "the ball rolled away from it";
+    }
+  }
 }
 
 }  // namespace

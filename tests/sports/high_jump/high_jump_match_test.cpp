@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "../athletics/field_event_session.h"
 #include "high_jump/high_jump_sport.h"
@@ -98,6 +99,28 @@ TEST(HighJumpMatch, RunningUnderTheBarFails) {
   const auto e = r.wait_for("failure", 60);
   ASSERT_FALSE(e.is_null());
   EXPECT_EQ(e["reason"], "touched_beyond");
+}
+
+TEST(HighJumpMatch, StandingInTheRunUpFanIsNoFailureLeavingItIs) {
+  // The 25 m fan round the bar's centre (20, bar_y): an athlete placed 24.5 m out (inside) goes
+  // on until its zero action lets it fall; one placed 25.5 m out fails at once for leaving it.
+  const double bar_x = 20.0;
+  for (const double out : {24.5, 25.5}) {
+    Session r = start("solo", kOfficial);
+    ASSERT_EQ(r.match->rules().bar_x, bar_x);
+    core::Humanoid& h = r.match->athlete(0);
+    const double a = 0.75 * M_PI;  // ahead-left of the bar, on the approach side
+    h.reset({{bar_x + out * std::cos(a), r.match->rules().bar_y + out * std::sin(a), 0.0}, 0});
+    const auto e = r.wait_for("failure", 90);
+    ASSERT_FALSE(e.is_null());
+    if (out < 25) {
+      EXPECT_EQ(e["reason"], "fell") << "in the fan: judged by the other rules only";
+      EXPECT_GT(e["t"].get<double>(), 0.3);
+    } else {
+      EXPECT_EQ(e["reason"], "left_area");
+      EXPECT_LT(e["t"].get<double>(), 0.1) << "at once";
+    }
+  }
 }
 
 TEST(HighJumpMatch, TheSoftMatGivesUnderALanding) {

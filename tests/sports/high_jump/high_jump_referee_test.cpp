@@ -73,6 +73,26 @@ TEST(HighJumpReferee, TheTimeAndAFallBeforeTheJumpAreFailures) {
   EXPECT_EQ(fallen.step(s)->reason, "fell");
 }
 
+TEST(HighJumpReferee, LeavingTheFanShapedRunUpBeforeTheJumpIsAFailure) {
+  // The run-up: the half disc of 25 m round the bar's centre, on the approach side (x < 0).
+  HighJumpReferee inside(official());
+  for (const Eigen::Vector3d& p : {Eigen::Vector3d(-20, -6, 0.9), Eigen::Vector3d(-0.5, 24.9, 0.9),
+                                   Eigen::Vector3d(-17.6, 17.6, 0.9), Eigen::Vector3d(2, 0, 0.9)})
+    EXPECT_FALSE(inside.step(at(1, p, p))) << p.transpose() << " is in the run-up";
+  for (const Eigen::Vector3d& p : {Eigen::Vector3d(-25.1, 0, 0.9), Eigen::Vector3d(-0.5, 25.1, 0.9),
+                                   Eigen::Vector3d(-17.8, -17.8, 0.9)}) {
+    HighJumpReferee out(official());
+    const auto d = out.step(at(1, p, p));
+    ASSERT_TRUE(d) << p.transpose() << " is outside the run-up";
+    EXPECT_FALSE(d->cleared);
+    EXPECT_EQ(d->reason, "left_area");
+  }
+  HighJumpRules wide = official();
+  wide.runup_radius = 40;
+  const Eigen::Vector3d far(-30, 0, 0.9);
+  EXPECT_FALSE(HighJumpReferee(wide).step(at(1, far, far))) << "a 40 m fan holds 30 m out";
+}
+
 TEST(HighJumpReferee, PaperClearsWhenEveryBodyIsPastThePlane) {
   HighJumpReferee ref(HighJumpRules{});
   BarStep s = at(1, {-0.2, 0, 1.3}, {0.5, 0, 1.3});

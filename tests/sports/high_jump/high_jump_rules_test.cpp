@@ -1,6 +1,9 @@
 // The high jump's settings read both ways: the seed's (paper) and World Athletics' (official).
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+#include <string>
+
 #include "high_jump/high_jump_sport.h"
 
 namespace olympics::sports::high_jump {
@@ -24,6 +27,15 @@ TEST(HighJumpRules, PaperIsTheSeedsAndOfficialTheRulebooks) {
   EXPECT_EQ(official.tries_per_height, 3);
   ASSERT_EQ(official.heights.size(), 10u);
   EXPECT_NEAR(official.heights[1] - official.heights[0], 0.05, 1e-12);
+  EXPECT_EQ(official.runup_radius, 25.0);
+  EXPECT_EQ(sport.rules({{"rules", "official"}, {"runup_radius", 30}}).runup_radius, 30.0);
+  try {  // a fan too small for the start mark is refused, saying what to set
+    sport.rules({{"rules", "official"}, {"runup_radius", 15}});
+    ADD_FAILURE() << "a 15 m fan leaves the start mark 20.9 m away outside";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("runup_radius"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(sport.rules({{"runup_radius", 15}}).runup_radius, 15.0) << "paper has no fan";
   for (double h : {0.5, 1.5, 2.0})  // the seed's training heights
     EXPECT_EQ(sport.rules({{"bar_height", h}}).heights, std::vector<double>{h});
 }
