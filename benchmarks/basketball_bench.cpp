@@ -196,7 +196,7 @@ nlohmann::json run_basketball_bench(const BasketballBenchOptions& o) {
 }
 
 void print_basketball_report(const nlohmann::json& r) {
-  std::printf("seeds %s\n", r["seeds"].get<std::string>().c_str());
+  if (!r["free_throw"].empty()) std::printf("seeds %s\n", r["seeds"].get<std::string>().c_str());
   for (const auto& [policy, f] : r["free_throw"].items())
     std::printf("free throw, %-9s %d throws: made %.1f%% (95%% interval %.1f-%.1f%%); endings %s\n",
                 policy.c_str(), f["throws"].get<int>(), 100 * f["made"].get<double>(),

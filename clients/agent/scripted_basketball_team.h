@@ -5,9 +5,10 @@
 //   aimed at the rim by the ballistic solution. Where the rim is beyond the shot's reach (the
 //   solution asks for more than the strongest swing's speed) it shoots the strongest swing
 //   untrimmed: a heave, since it cannot walk nearer (below);
-// - otherwise it stands balanced on its ankles and hips where the restart put it. A defender
-//   is put by the match between the attacker and the rim (`restart_distance` in front of the
-//   taker), and stays there.
+// - otherwise it stands where the restart put it, balanced with gravity compensation
+//   (control/standing_balance.h; so too once its shot has left the hands). A defender is put by the
+//   match between the attacker and the rim (`restart_distance` in front of the taker), and stays
+//   there.
 //
 // What it does not do, and why (docs/basketball.md, "The scripted team player"): walk. There is
 // no SMPL-X locomotion (the stepping controller drives the SMPL humanoid, whose drives are three
@@ -17,6 +18,7 @@
 
 #include <optional>
 
+#include "control/body_model.h"
 #include "scripted_basketball.h"
 
 namespace olympics::client {
@@ -34,6 +36,9 @@ class ScriptedBasketballTeamPlayer : public Policy {
   // Seconds from the ball's presentation to the end of a shot's follow-through: the shooter
   // swings at `FreeThrowShot::shot_s` (0.95 s) and the ball is gone a few ticks later.
   static constexpr double kShotPlay_s = 1.6;
+  // Seconds after the swing's start by which the ball has left the hands (its third tick, 0.1 s,
+  // with margin).
+  static constexpr double kRelease_s = 0.2;
 
  private:
   // Is the rim within the set shot's reach from where the ball is (the ballistic solution's
@@ -42,6 +47,7 @@ class ScriptedBasketballTeamPlayer : public Policy {
 
   FreeThrowShot shot_;
   MatchInfo match_;
+  control::BodyModel model_ = control::BodyModel::humanoid(core::HumanoidKind::SmplX);
   std::optional<ScriptedBasketballPolicy> shooter_;  // while a shot is on
   double shot_clock_s_ = 0;                          // s since the shot began
   bool was_presented_ = false;
