@@ -7,9 +7,9 @@
 // the ankles' pitch and sideways by the hips and ankles rolling together (the legs and pelvis are
 // a parallelogram); the hips right the pelvis.
 //
-// Measured (docs/basketball.md, "The scripted team player"): two SMPL-X players standing in a
-// 1v1 (seeds 1-2, tuning), no fall in 2 x 60 s with the gains below; the ankle-and-hip strategy
-// of the free-throw shooter falls every 10-15 s, with the fixture's 120 Hz gains every 3 s.
+// Measured (docs/control.md, "Measured facts"): two SMPL-X players standing in a 1v1 (seeds 1-2,
+// tuning), no fall in 2 x 60 s with the gains below; the free-throw shooter's ankle-and-hip
+// strategy falls 4-7 s after each stand-up, the fixture's own 120 Hz gains sooner.
 #pragma once
 
 #include <span>
