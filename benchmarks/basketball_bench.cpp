@@ -10,6 +10,7 @@
 #include "core/humanoid_assets.h"
 #include "registry.h"
 #include "scripted_basketball.h"
+#include "scripted_basketball_team.h"
 
 namespace olympics::bench {
 namespace {
@@ -96,23 +97,94 @@ nlohmann::json scripted_throws(const std::vector<std::uint64_t>& seeds, bool per
   return f;
 }
 
+// Mean and normal 95% interval of per-game values.
+nlohmann::json mean_ci95(const std::vector<double>& v) {
+  double mean = 0, sq = 0;
+  for (double x : v) mean += x;
+  mean /= v.size();
+  for (double x : v) sq += (x - mean) * (x - mean);
+  const double half = v.size() > 1 ? 1.96 * std::sqrt(sq / (v.size() - 1) / v.size()) : 0.0;
+  return {{"mean", mean}, {"ci95", {mean - half, mean + half}}};
+}
+
+// Scripted 1v1 games, both slots the scripted team player, `game_s` seconds each. Points and falls
+// are per game scaled to 10 minutes and per minute; shots are the players' swings (a heave: from
+// beyond the set shot's reach), made is the counted baskets over them.
+nlohmann::json scripted_games(const std::vector<std::uint64_t>& seeds, double game_s) {
+  std::vector<double> points[2], falls_per_min;
+  int shots = 0, heaves = 0, made = 0;
+  std::map<std::string, int> stoppages;
+  nlohmann::json games = nlohmann::json::array();
+  for (const std::uint64_t seed : seeds) {
+    auto m = sports::sport_or_throw("basketball").create({"1v1", seed, game_s, {}});
+    const auto& match = dynamic_cast<const sports::basketball::BasketballMatch&>(*m);
+    const client::MatchInfo info = in_process_match_info("basketball", "1v1", *m);
+    client::ScriptedBasketballTeamPlayer players[2];
+    for (auto& p : players) p.start(info);
+    std::vector<float> obs[2], act[2];
+    int falls = 0;
+    while (!m->outcome().match_over) {
+      for (int s = 0; s < 2; ++s) {
+        obs[s].resize(m->obs_size()), act[s].resize(m->action_size());
+        m->observe(s, obs[s]);
+        players[s].act(obs[s], act[s]);
+      }
+      m->step({std::span<const float>(act[0]), std::span<const float>(act[1])});
+      const nlohmann::json& info_json = m->outcome().info;
+      if (info_json.contains("events"))
+        for (const auto& e : info_json["events"]) {
+          const std::string call = e.value("call", "");
+          falls += call == "fall";
+          made += call == "basket" && e.value("points", 0) > 0;
+          if (call != "fall" && call != "stood_up" && call != "restart" && call != "basket")
+            ++stoppages[call];
+        }
+    }
+    const double minutes = m->tick() * m->control_dt() / 60;
+    const auto& score = match.referee().score();
+    for (int side = 0; side < 2; ++side) points[side].push_back(score[side] * 10 / minutes);
+    falls_per_min.push_back(falls / minutes);
+    for (const auto& p : players) shots += p.shots(), heaves += p.heaves();
+    games.push_back({{"seed", seed},
+                     {"minutes", minutes},
+                     {"score", {score[0], score[1]}},
+                     {"falls", falls},
+                     {"shots", players[0].shots() + players[1].shots()}});
+  }
+  return {{"games", static_cast<int>(seeds.size())},
+          {"game_s", game_s},
+          {"points_per_10_min_side_0", mean_ci95(points[0])},
+          {"points_per_10_min_side_1", mean_ci95(points[1])},
+          {"falls_per_min", mean_ci95(falls_per_min)},
+          {"shots", shots},
+          {"heaves", heaves},
+          {"made", made},
+          {"made_share_ci95", wilson_95(made, std::max(shots, 1))},
+          {"stoppages", stoppages},
+          {"per_game", games}};
+}
+
 }  // namespace
 
 nlohmann::json run_basketball_bench(const BasketballBenchOptions& o) {
   const std::vector<std::uint64_t> seeds = episode_seeds(o.seeds, o.throws);
   nlohmann::json report = {{"free_throw", nlohmann::json::object()},
                            {"seeds", o.seeds.empty() ? "1-" + std::to_string(o.throws) : o.seeds}};
-  for (const auto& p : o.policies)
+  for (const auto& p : o.free_throws ? o.policies : std::vector<std::string>{})
     report["free_throw"][p] =
         p == "scripted" ? scripted_throws(seeds, o.per_throw) : free_throws(p, seeds);
   // The scripted shooter aims by the ballistic solution: from nearer lines too.
-  const bool scripted =
-      std::find(o.policies.begin(), o.policies.end(), "scripted") != o.policies.end();
+  const bool scripted = o.free_throws && std::find(o.policies.begin(), o.policies.end(),
+                                                   "scripted") != o.policies.end();
   for (double d : scripted ? o.scripted_distances : std::vector<double>{}) {
     char key[32];
     std::snprintf(key, sizeof key, "%g", d);
     report["scripted_by_distance"][key] =
         free_throws("scripted", seeds, {{"free_throw_distance", d}});
+  }
+  if (!o.game_seeds.empty()) {
+    report["scripted_1v1"] = scripted_games(episode_seeds(o.game_seeds, 0), o.game_s);
+    report["scripted_1v1"]["seeds"] = o.game_seeds;
   }
   if (o.speed) {
     static const core::ModelSpec smplx = core::load_humanoid(core::HumanoidKind::SmplX);
@@ -124,7 +196,7 @@ nlohmann::json run_basketball_bench(const BasketballBenchOptions& o) {
 }
 
 void print_basketball_report(const nlohmann::json& r) {
-  std::printf("seeds %s\n", r["seeds"].get<std::string>().c_str());
+  if (!r["free_throw"].empty()) std::printf("seeds %s\n", r["seeds"].get<std::string>().c_str());
   for (const auto& [policy, f] : r["free_throw"].items())
     std::printf("free throw, %-9s %d throws: made %.1f%% (95%% interval %.1f-%.1f%%); endings %s\n",
                 policy.c_str(), f["throws"].get<int>(), 100 * f["made"].get<double>(),
@@ -147,6 +219,24 @@ void print_basketball_report(const nlohmann::json& r) {
           "interval %.1f-%.1f%%)\n",
           d.c_str(), f["throws"].get<int>(), 100 * f["made"].get<double>(),
           100 * f["made_ci95"][0].get<double>(), 100 * f["made_ci95"][1].get<double>());
+  if (r.contains("scripted_1v1")) {
+    const auto& g = r["scripted_1v1"];
+    auto rate = [](const nlohmann::json& f) {
+      char text[80];
+      std::snprintf(text, sizeof text, "%.2f (95%% interval %.2f-%.2f)", f["mean"].get<double>(),
+                    f["ci95"][0].get<double>(), f["ci95"][1].get<double>());
+      return std::string(text);
+    };
+    std::printf(
+        "scripted 1v1, %d games of %g s (seeds %s): points per 10 minutes, side 0 %s, side 1 %s; "
+        "shots %d (%d heaves from beyond reach), made %d (95%% interval %.1f-%.1f%%); falls per "
+        "minute %s; stoppages %s\n",
+        g["games"].get<int>(), g["game_s"].get<double>(), g["seeds"].get<std::string>().c_str(),
+        rate(g["points_per_10_min_side_0"]).c_str(), rate(g["points_per_10_min_side_1"]).c_str(),
+        g["shots"].get<int>(), g["heaves"].get<int>(), g["made"].get<int>(),
+        100 * g["made_share_ci95"][0].get<double>(), 100 * g["made_share_ci95"][1].get<double>(),
+        rate(g["falls_per_min"]).c_str(), g["stoppages"].dump().c_str());
+  }
   for (const char* mode : {"1v1", "2v2"}) {
     const std::string key = "speed_" + std::string(mode);
     if (!r.contains(key)) continue;

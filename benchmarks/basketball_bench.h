@@ -19,7 +19,12 @@ struct BasketballBenchOptions {
   double seconds = 2;                                        // wall seconds per speed measurement
   int repeats = 3;
   bool speed = true;
-  bool per_throw = false;  // each scripted throw's release in the report
+  bool per_throw = false;   // each scripted throw's release in the report
+  bool free_throws = true;  // false: only the scripted 1v1 games (if any)
+  // Scripted 1v1 games (both slots the scripted team player), one per seed of `game_seeds`
+  // ("400001-400024"; empty: none), each `game_s` seconds of play.
+  std::string game_seeds;
+  double game_s = 600;
 };
 
 nlohmann::json run_basketball_bench(const BasketballBenchOptions& options);

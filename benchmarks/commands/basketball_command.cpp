@@ -1,5 +1,6 @@
 // olympics-bench basketball [--json] [--throws N | --seeds A-B,..] [--policies P,..]
 //                           [--distances D,.. | --no-distances] [--per-throw]
+//                           [--games A-B,.. [--game-seconds S]] [--no-free-throws]
 #include "basketball_bench.h"
 #include "bench_command.h"
 
@@ -22,6 +23,12 @@ BenchCommand basketball_command(CLI::App& app) {
   auto no_distances = std::make_shared<bool>(false);
   cli.add_flag("--no-distances", *no_distances, "the scripted shooter from the rule's line only");
   cli.add_flag("--per-throw", o->per_throw, "each scripted throw's release in the report");
+  cli.add_option("--games", o->game_seeds,
+                 "scripted 1v1 games, one per seed (ranges and seeds, comma-separated: "
+                 "400001-400024)");
+  cli.add_option("--game-seconds", o->game_s, "seconds of play per scripted 1v1 game")
+      ->check(CLI::PositiveNumber);
+  cli.add_flag("--no-free-throws{false}", o->free_throws, "skip the free throws");
   cli.add_flag("--no-speed{false}", o->speed, "skip the ticks/s measurements");
   cli.add_option("--seconds", o->seconds, "wall seconds per speed measurement")
       ->check(CLI::PositiveNumber);

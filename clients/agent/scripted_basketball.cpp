@@ -46,19 +46,6 @@ void set_arm(std::span<float> a, bool right, double aim, const ArmPose& p) {
     set_joint(a, fingers + f, 0, side * p.curl);
 }
 
-// Standing balance by the ankles and hips (the stepping controller's standing strategy, for the
-// SMPL-X observation and action): the root held over the middle of the ankles.
-void stand(std::span<const float> o, std::span<float> a, const FreeThrowShot& s) {
-  const Eigen::Vector3d mid = 0.5 * (body_position(o, kLAnkle) + body_position(o, kRAnkle));
-  const Eigen::Vector3d v = vec3(o, kLinVel);
-  const double dx = -mid.x(), dy = -mid.y();
-  for (int ankle : {kLAnkle, kRAnkle}) {
-    set_joint(a, ankle, 1, s.ankle_bias + s.ankle_p * dx + s.ankle_d * v.x());
-    set_joint(a, ankle, 0, -(s.ankle_p * dy + s.ankle_d * v.y()));
-  }
-  for (int hip : {kLHip, kRHip}) set_joint(a, hip, 1, s.hip_p * dx);
-}
-
 // The swing whose ball leaves at `speed`, interpolated in the measured responses (ordered by
 // speed, at least one); beyond their ends, the end (which flings the ball at its own speed).
 SwingResponse swing_for_speed(const std::vector<SwingResponse>& swing, double speed) {
@@ -75,6 +62,20 @@ SwingResponse swing_for_speed(const std::vector<SwingResponse>& swing, double sp
 }
 
 }  // namespace
+
+// The root held over the middle of the ankles by the ankles and hips (the stepping controller's
+// standing strategy, for the SMPL-X observation and action).
+void stand_on_ankles_and_hips(std::span<const float> o, std::span<float> a,
+                              const FreeThrowShot& s) {
+  const Eigen::Vector3d mid = 0.5 * (body_position(o, kLAnkle) + body_position(o, kRAnkle));
+  const Eigen::Vector3d v = vec3(o, kLinVel);
+  const double dx = -mid.x(), dy = -mid.y();
+  for (int ankle : {kLAnkle, kRAnkle}) {
+    set_joint(a, ankle, 1, s.ankle_bias + s.ankle_p * dx + s.ankle_d * v.x());
+    set_joint(a, ankle, 0, -(s.ankle_p * dy + s.ankle_d * v.y()));
+  }
+  for (int hip : {kLHip, kRHip}) set_joint(a, hip, 1, s.hip_p * dx);
+}
 
 // The release point depends a little on the swing, the swing on the speed, the speed on the
 // release point: a few rounds of that settle it. The release point is taken on the line from the
@@ -117,10 +118,11 @@ double ScriptedBasketballPolicy::release_trim(std::span<const float> o) const {
 }
 
 void ScriptedBasketballPolicy::start(const MatchInfo& match) {
-  if (match.sport != "basketball" || match.mode != "free_throw")
+  // In team play the team player starts a shot when the ball is presented to it at a restart.
+  const bool shoots = match.mode == "free_throw" || match.mode == "1v1" || match.mode == "2v2";
+  if (match.sport != "basketball" || !shoots)
     throw std::invalid_argument(
-        "the scripted basketball policy shoots free throws (basketball "
-        "free_throw), not " +
+        "the scripted basketball shooter shoots in basketball free_throw, 1v1 or 2v2, not " +
         match.sport + " " + match.mode);
   ball_ = match.observation.offset("ball", "position");
   rim_ = match.observation.offset("rim", "centre");
@@ -167,14 +169,10 @@ void ScriptedBasketballPolicy::act(std::span<const float> o, std::span<float> a)
       pose.elevation += trim_;
     }
   }
-  stand(o, a, shot_);
+  stand_on_ankles_and_hips(o, a, shot_);
   set_arm(a, false, bearing, pose);
   set_arm(a, true, bearing, pose);
   clock_s_ += control_dt_;
-}
-
-std::unique_ptr<Policy> make_scripted_basketball() {
-  return std::make_unique<ScriptedBasketballPolicy>();
 }
 
 }  // namespace olympics::client

@@ -83,6 +83,11 @@ struct FreeThrowShot {
   double ankle_p = 1.0, ankle_d = 2.0, ankle_bias = 0.0, hip_p = 1.0;
 };
 
+// The shooter's standing balance: the root held over the middle of the ankles by the ankles' and
+// hips' pitch and roll (`shot`'s gains). Shared with the team player (scripted_basketball_team.h).
+void stand_on_ankles_and_hips(std::span<const float> observation, std::span<float> action,
+                              const FreeThrowShot& shot);
+
 class ScriptedBasketballPolicy : public Policy {
  public:
   explicit ScriptedBasketballPolicy(const FreeThrowShot& shot = {}) : shot_(shot) {}

@@ -16,7 +16,7 @@ namespace olympics::client {
   X(fencing, fencing)                  \
   X(boxing, boxing)                    \
   X(soccer, soccer)                    \
-  X(basketball, basketball)            \
+  X(basketball, basketball_team)       \
   X(javelin, javelin)                  \
   X(hurdles, hurdles)                  \
   X(golf, golf)                        \

@@ -30,5 +30,25 @@ TEST(BasketballMatch, A1v1BetweenTwoAgentProcessesIsStoredWithItsScoreAndReplays
   EXPECT_TRUE(check.identical) << check.report;
 }
 
+TEST(BasketballMatch, ScriptedTeamPlayersInTwoAgentProcessesShootAndTheMatchReplays) {
+  // `--policy scripted` in 1v1 is the team player (clients/agent/scripted_basketball_team.h):
+  // the check ball's taker shoots (from 7.5 m, beyond the set shot's reach: a heave that lands
+  // short and bounces out), the other side takes the next check ball, and so on.
+  ServerFixture server;
+  const std::vector<std::string> common = {"--request-id", "scripted", "--sport",  "basketball",
+                                           "--mode",       "1v1",      "--seed",   "1",
+                                           "--time-limit", "10",       "--policy", "scripted"};
+  const auto r = server.two_agents(common, {"--slots", "0"}, {"--slots", "1"});
+  ASSERT_FALSE(r.empty());
+  EXPECT_EQ(r.at("reason"), "time_limit") << r.dump();
+  auto stored = server.store()->find(r.at("match_id"));
+  ASSERT_TRUE(stored.has_value());
+  const auto info = nlohmann::json::parse(stored->info);
+  // A shot that went out (random players never shoot: the test above).
+  EXPECT_GE(info.at("stoppages").value("out", 0), 1) << stored->info;
+  const auto check = server::verify_replay(server.replay(r.at("match_id")));
+  EXPECT_TRUE(check.identical) << check.report;
+}
+
 }  // namespace
 }  // namespace olympics::testing
