@@ -140,7 +140,7 @@ void ScriptedBasketballPolicy::act(std::span<const float> o, std::span<float> a)
     throw std::invalid_argument("the scripted basketball policy plays the SMPL-X humanoid");
   std::fill(a.begin(), a.end(), 0.0f);
   const Eigen::Vector3d rim = vec3(o, rim_);
-  const double bearing = std::atan2(rim.y(), rim.x()) + shot_.aim_offset;
+  double bearing = std::atan2(rim.y(), rim.x()) + shot_.aim_offset;
   const ArmPose hold{shot_.hands_apart, shot_.hold_elevation, shot_.palm_roll,
                      shot_.hold_elbow,  shot_.wrist_up,       shot_.finger_curl};
   // The hands come forward low, under the presented ball, then rise to it.
@@ -164,7 +164,7 @@ void ScriptedBasketballPolicy::act(std::span<const float> o, std::span<float> a)
     pose.curl = shot_.shot_curl;
     if (shot_.trim_tick > 0 && aim_.elevation >= shot_.trim_from_elevation) {
       pose.elevation -= shot_.trim_swing;
-      if (++swing_tick_ >= shot_.trim_tick) pose.curl = shot_.trim_curl;
+      if (++swing_tick_ >= shot_.trim_tick) pose.curl = shot_.trim_curl, bearing += shot_.trim_turn;
       if (swing_tick_ == shot_.trim_tick) trim_ = release_trim(o);
       pose.elevation += trim_;
     }
