@@ -10,8 +10,17 @@ namespace {
 StepGains walker_gains(const JumpApproach& approach) {
   StepGains g;
   g.max_speed = approach.walk_speed;
-  g.turn_start = 0.15;  // standing, it steps round until square to where it will jump
+  // It turns toward where it will jump only while walking there: stepping round on the spot
+  // (StepGains::turn_start) overshot and stepped to and fro for the rest of the attempt.
+  g.turn_start = 0;
   return g;
+}
+
+bool feet_down(std::span<const float> o) {
+  constexpr double kAnkleHeight = 0.07;  // the ankle's origin above the sole, foot flat
+  const double ground = -smpl::root_height(o);
+  return smpl::body_position(o, smpl::kLAnkle).z() < ground + kAnkleHeight + 0.03 &&
+         smpl::body_position(o, smpl::kRAnkle).z() < ground + kAnkleHeight + 0.03;
 }
 
 }  // namespace
@@ -24,6 +33,7 @@ WalkAndJump::WalkAndJump(const JumpApproach& approach, double control_dt)
 void WalkAndJump::restart() {
   legs_.emplace(walker_gains(approach_), control_dt_);
   still_for_ = 0;
+  standing_ = false;
   jumping_.reset();
 }
 
@@ -35,10 +45,17 @@ void WalkAndJump::act(std::span<const float> o, const Eigen::Vector2d& stop, dou
     *jumping_ += control_dt_;
     return;
   }
-  legs_->act(o, stop, facing, a);
-  const bool there = !legs_->stepping() && stop.norm() < approach_.arrived_m &&
-                     smpl::root_velocity(o).head<2>().norm() < approach_.still_speed;
-  still_for_ = there ? still_for_ + control_dt_ : 0;
+  // Within reach of the stop and with both feet down it stops walking there and stands where it
+  // is (a fresh controller stands when its target is where it is): the walker itself stops
+  // only within 0.12 m and slower than 0.25 m/s at a step's end, and near a stop it tends to
+  // step to and fro round it for the rest of the attempt.
+  if (!standing_ && stop.norm() < approach_.arrived_m && feet_down(o)) {
+    legs_.emplace(walker_gains(approach_), control_dt_);
+    standing_ = true;
+  }
+  legs_->act(o, standing_ ? Eigen::Vector2d::Zero() : stop, facing, a);
+  const bool still = standing_ && smpl::root_velocity(o).head<2>().norm() < approach_.still_speed;
+  still_for_ = still ? still_for_ + control_dt_ : 0;
   if (still_for_ >= approach_.still_s) jumping_ = 0.0;
 }
 

@@ -15,7 +15,7 @@ namespace olympics::client::control {
 
 struct JumpApproach {
   double still_s = 0.8;      // s standing still at the stop before the jump
-  double arrived_m = 0.3;    // m from the stop that counts as there (the walker stands closer)
+  double arrived_m = 0.15;   // m from the stop where it stops walking and stands
   double still_speed = 0.1;  // m/s of the root below which it counts as still
   double walk_speed = 1.2;   // m/s the walker is asked for at most (StepGains::max_speed)
   StandingJump jump;
@@ -36,7 +36,8 @@ class WalkAndJump {
   JumpApproach approach_;
   double control_dt_;
   std::optional<StepController> legs_;
-  double still_for_ = 0;           // s it has stood at the stop
+  bool standing_ = false;          // it has stopped walking and stands where it came to
+  double still_for_ = 0;           // s it has stood still there
   std::optional<double> jumping_;  // s into the jump, once it began
 };
 
