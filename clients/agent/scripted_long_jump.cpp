@@ -8,11 +8,15 @@
 namespace olympics::client {
 
 control::StandingJump LongJumpPlan::standing_long_jump() {
+  // The search's means after 12 + 25 iterations (tests/sports/long_jump/
+  // scripted_long_jump_test.cpp): a deep crouch with the trunk forward and the arms back, a
+  // push of the hips, knees and ankles with the arms thrown forward, then the hips flexed and
+  // knees tucked for the flight.
   control::StandingJump j;
-  j.crouch = {-0.9, 1.4, 0.4, 0.5, 0.0, 0.8};
-  j.push = {0.2, 0.0, -0.6, 0.2, 0.0, -0.8};
-  j.flight = {-1.4, 1.0, 0.0, 0.6, 0.0, -0.8};
-  j.crouch_s = 0.5, j.push_s = 0.2;
+  j.crouch = {-1.256, 1.326, -0.758, 0.979, 0.549, 0.587};
+  j.push = {0.857, -0.122, -1.030, -1.526, -0.364, -1.613};
+  j.flight = {-0.109, -0.013, -0.402, 0.816, 0.341, -1.725};
+  j.crouch_s = 0.790, j.push_s = 0.223;
   return j;
 }
 
