@@ -137,6 +137,7 @@ TEST(ScriptedLongJumpProbe, DISABLED_Attempts) {
     client::LongJumpPlan plan;
     if (std::getenv("WALK")) plan.approach.walk_speed = std::atof(std::getenv("WALK"));
     if (std::getenv("STOP")) plan.stop_m = std::atof(std::getenv("STOP"));
+    if (std::getenv("STILL")) plan.approach.still_s = std::atof(std::getenv("STILL"));
     if (const char* jump = std::getenv("JUMP")) {  // 20 numbers: a search's means
       std::vector<double> x(client::control::StandingJump::kParameters);
       std::istringstream in(jump);
