@@ -20,6 +20,8 @@ namespace olympics::client {
   X(javelin, javelin)                  \
   X(hurdles, hurdles)                  \
   X(golf, golf)                        \
+  X(long_jump, long_jump)              \
+  X(high_jump, high_jump)              \
   /* the list's end */
 // clang-format on
 

@@ -64,7 +64,7 @@ HighJumpMatch::HighJumpMatch(const HighJumpRules& rules, const ModeSpec& mode, L
       tag.sensor = true;
       mat_tags_.back() = &tag;
     }
-    add_player(athlete_model(), start_mark(slot));
+    add_player(athlete_model(), jittered_start_mark(slot));
     athletes_.back().root_prev = athletes_.back().reward_root_prev =
         player(slot).body_state(0).position;
   }
@@ -123,7 +123,7 @@ void HighJumpMatch::settle_tick() {
       if (!a.series
                .done()) {  // the next attempt: the bar up (at the series' height), back to the mark
         a.bar->set(a.series.bar_height());
-        reset_player(slot, start_mark(slot));
+        reset_player(slot, jittered_start_mark(slot));
         a.referee = HighJumpReferee(rules_);
         a.attempt_start = time();
         a.root_prev = a.reward_root_prev = player(slot).body_state(0).position;

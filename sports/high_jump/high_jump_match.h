@@ -10,6 +10,7 @@
 
 #include "athletics/athlete_probe.h"
 #include "athletics/attempt_series.h"
+#include "framework/jittered_start.h"
 #include "framework/smpl_match.h"
 #include "high_jump/crossbar.h"
 #include "high_jump/high_jump_referee.h"
@@ -64,6 +65,12 @@ class HighJumpMatch : public SmplMatch {
   }
   athletics::Footprint mat(int slot) const;
   core::RootPlacement start_mark(int slot) const { return {{0.0, lane_y(slot), 0.0}, 0.0}; }
+  // The start mark moved and turned a little by the match's random stream (up to 0.1 m, 0.1
+  // rad: framework/jittered_start.h), for each attempt, so that seeds differ.
+  core::RootPlacement jittered_start_mark(int slot) {
+    const core::RootPlacement m = start_mark(slot);
+    return jittered_start(m.position.head<2>(), m.yaw, rng());
+  }
   BarStep read_step(int slot) const;
   void finish();
 

@@ -49,7 +49,7 @@ LongJumpMatch::LongJumpMatch(const LongJumpRules& rules, const ModeSpec& mode, L
     : SmplMatch(mode, std::move(layout), settings), rules_(rules) {
   for (int slot = 0; slot < slot_count(); ++slot) {
     build_lane(slot);
-    add_player(athlete_model(), start_mark(slot));
+    add_player(athlete_model(), jittered_start_mark(slot));
     athletes_.push_back({athletics::HorizontalSeries(rules_.attempts), LongJumpReferee(rules_), 0,
                          std::nullopt, player(slot).body_state(0).position});
   }
@@ -122,7 +122,7 @@ void LongJumpMatch::settle_tick() {
       log(athletics::attempt_call(*a.decided, time(), slot, a.series.taken()));
       a.decided.reset();
       if (!a.series.done()) {  // the next attempt from the start mark
-        reset_player(slot, start_mark(slot));
+        reset_player(slot, jittered_start_mark(slot));
         a.referee = LongJumpReferee(rules_);
         a.attempt_start = time();
         a.root_prev = player(slot).body_state(0).position;

@@ -8,6 +8,7 @@
 
 #include "athletics/athlete_probe.h"
 #include "athletics/attempt_series.h"
+#include "framework/jittered_start.h"
 #include "framework/smpl_match.h"
 #include "long_jump/long_jump_referee.h"
 #include "long_jump/long_jump_rules.h"
@@ -50,6 +51,12 @@ class LongJumpMatch : public SmplMatch {
   void build_lane(int slot);
   JumpStep read_step(int slot) const;
   core::RootPlacement start_mark(int slot) const;
+  // The start mark moved and turned a little by the match's random stream (up to 0.1 m, 0.1
+  // rad: framework/jittered_start.h), for each attempt, so that seeds differ.
+  core::RootPlacement jittered_start_mark(int slot) {
+    const core::RootPlacement m = start_mark(slot);
+    return jittered_start(m.position.head<2>(), m.yaw, rng());
+  }
   athletics::Footprint pit(int slot) const;
   Eigen::Vector3d goal(int slot) const { return {rules_.goal_x, lane_y(slot), rules_.goal_z}; }
   void finish();

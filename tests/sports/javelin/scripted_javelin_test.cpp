@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
-#include <random>
 
+#include "../athletics/cross_entropy_search.h"
 #include "javelin/javelin_match.h"
 #include "registry.h"
 
@@ -101,47 +101,28 @@ TEST(ScriptedJavelin, ThrowsEachAttemptOfASeries) {
 // The search that found the baseline's poses (run by hand: --gtest_also_run_disabled_tests;
 // ITER=n iterations of 150 candidates on seeds 1-3).
 TEST(ScriptedJavelinSearch, DISABLED_CrossEntropy) {
-  std::mt19937_64 rng(1);
-  constexpr int kDims = 20;
-  std::array<double, kDims> mean{}, sd{};
-  mean = {-1.040, 0.369, -0.896, 0.257,  -0.289, -1.994, 1.074, -0.032, 0.761, -1.162,
-          -0.206, 1.048, -0.892, -0.012, -0.395, -0.077, 0.442, -0.389, 0.850, 2.013};
-  sd.fill(0.4);
+  std::vector<double> mean = {-1.040, 0.369,  -0.896, 0.257,  -0.289, -1.994, 1.074,
+                              -0.032, 0.761,  -1.162, -0.206, 1.048,  -0.892, -0.012,
+                              -0.395, -0.077, 0.442,  -0.389, 0.850,  2.013};
+  std::vector<double> sd(mean.size(), 0.4);
   sd[18] = 0.1, sd[19] = 1;
-  auto decode = [](const std::array<double, kDims>& x) {
+  auto decode = [](const std::vector<double>& x) {
     client::JavelinThrow h;
     for (int i = 0; i < 9; ++i) h.hold[i] = x[i], h.swing[i] = x[9 + i];
     h.swing_s = std::clamp(x[18], 0.4, 1.0);
     h.release_ticks = std::clamp(static_cast<int>(std::lround(x[19])), 1, 12);
     return h;
   };
-  const int iterations = std::getenv("ITER") ? std::atoi(std::getenv("ITER")) : 12;
-  for (int it = 0; it < iterations; ++it) {
-    std::vector<std::pair<double, std::array<double, kDims>>> pop;
-    for (int k = 0; k < 150; ++k) {
-      std::array<double, kDims> x;
-      for (int d = 0; d < kDims; ++d) x[d] = std::normal_distribution<double>(mean[d], sd[d])(rng);
-      double s = 0;
-      for (std::uint64_t seed = 1; seed <= 3; ++seed) s += score(throw_once(seed, decode(x)));
-      pop.push_back({s / 3, x});
-    }
-    std::sort(pop.begin(), pop.end(), [](auto& a, auto& b) { return a.first > b.first; });
-    const int elite = 15;
-    for (int d = 0; d < kDims; ++d) {
-      double m = 0, v = 0;
-      for (int e = 0; e < elite; ++e) m += pop[e].second[d];
-      m /= elite;
-      for (int e = 0; e < elite; ++e) v += std::pow(pop[e].second[d] - m, 2);
-      mean[d] = m, sd[d] = std::max(std::sqrt(v / elite), 0.03);
-    }
-    std::printf("iter %d best %.3f elite mean %.3f\n  best:", it, pop[0].first,
-                pop[elite - 1].first);
-    for (double v : pop[0].second) std::printf(" %.3f", v);
-    std::printf("\n  mean:");
-    for (double v : mean) std::printf(" %.3f", v);
-    std::printf("\n");
-    std::fflush(stdout);
-  }
+  athletics::CrossEntropyRun run;
+  if (std::getenv("ITER")) run.iterations = std::atoi(std::getenv("ITER"));
+  athletics::cross_entropy_search(
+      mean, sd,
+      [&](const std::vector<double>& x) {
+        double s = 0;
+        for (std::uint64_t seed = 1; seed <= 3; ++seed) s += score(throw_once(seed, decode(x)));
+        return s / 3;
+      },
+      run);
 }
 
 }  // namespace

@@ -1,0 +1,62 @@
+#include "control/walk_and_jump.h"
+
+#include <algorithm>
+
+#include "smpl_observation.h"
+
+namespace olympics::client::control {
+namespace {
+
+StepGains walker_gains(const JumpApproach& approach) {
+  StepGains g;
+  g.max_speed = approach.walk_speed;
+  // It turns toward where it will jump only while walking there: stepping round on the spot
+  // (StepGains::turn_start) overshot and stepped to and fro for the rest of the attempt.
+  g.turn_start = 0;
+  return g;
+}
+
+bool feet_down(std::span<const float> o) {
+  constexpr double kAnkleHeight = 0.07;  // the ankle's origin above the sole, foot flat
+  const double ground = -smpl::root_height(o);
+  return smpl::body_position(o, smpl::kLAnkle).z() < ground + kAnkleHeight + 0.03 &&
+         smpl::body_position(o, smpl::kRAnkle).z() < ground + kAnkleHeight + 0.03;
+}
+
+}  // namespace
+
+WalkAndJump::WalkAndJump(const JumpApproach& approach, double control_dt)
+    : approach_(approach), control_dt_(control_dt) {
+  restart();
+}
+
+void WalkAndJump::restart() {
+  legs_.emplace(walker_gains(approach_), control_dt_);
+  still_for_ = 0;
+  standing_ = false;
+  jumping_.reset();
+}
+
+void WalkAndJump::act(std::span<const float> o, const Eigen::Vector2d& stop, double facing,
+                      std::span<float> a) {
+  std::fill(a.begin(), a.end(), 0.0f);
+  if (jumping_) {
+    write_standing_jump(approach_.jump, *jumping_, a);
+    *jumping_ += control_dt_;
+    return;
+  }
+  // Within reach of the stop and with both feet down it stops walking there and stands where it
+  // is (a fresh controller stands when its target is where it is): the walker itself stops
+  // only within 0.12 m and slower than 0.25 m/s at a step's end, and near a stop it tends to
+  // step to and fro round it for the rest of the attempt.
+  if (!standing_ && stop.norm() < approach_.arrived_m && feet_down(o)) {
+    legs_.emplace(walker_gains(approach_), control_dt_);
+    standing_ = true;
+  }
+  legs_->act(o, standing_ ? Eigen::Vector2d::Zero() : stop, facing, a);
+  const bool still = standing_ && smpl::root_velocity(o).head<2>().norm() < approach_.still_speed;
+  still_for_ = still ? still_for_ + control_dt_ : 0;
+  if (still_for_ >= approach_.still_s) jumping_ = 0.0;
+}
+
+}  // namespace olympics::client::control

@@ -1,0 +1,40 @@
+// The scripted long jumper: it walks down its runway to a stop just behind the foul line, stands
+// until it is still, then makes a standing two-footed jump into the pit (control::WalkAndJump).
+// From the observation alone, by name: the foul line's point on its runway's centre and the
+// seed's goal (10 m further down the same centre line) give it the runway's direction; it
+// starts again with each attempt (the attempt's time left jumps back up).
+//
+// A floor for learned jumpers, not a long jumper an official would recognise: no run-up speed
+// at the take-off. The jump's poses and times were found by a search on tuning seeds
+// (docs/athletics.md "The scripted jumpers").
+#pragma once
+
+#include <optional>
+
+#include "control/walk_and_jump.h"
+#include "policies.h"
+
+namespace olympics::client {
+
+struct LongJumpPlan {
+  // m: the root's stop behind the line. The toes reach ~0.25 m ahead of the root, the crouch's
+  // head and hands further, and the walker stops within 0.12 m or so of where it is sent.
+  double stop_m = 0.8;
+  control::JumpApproach approach{.jump = standing_long_jump()};
+  static control::StandingJump standing_long_jump();
+};
+
+class ScriptedLongJumpPolicy : public Policy {
+ public:
+  explicit ScriptedLongJumpPolicy(const LongJumpPlan& plan = {}) : plan_(plan) {}
+  void start(const MatchInfo& match) override;
+  void act(std::span<const float> observation, std::span<float> action) override;
+
+ private:
+  LongJumpPlan plan_;
+  int line_ = 0, goal_ = 0, time_left_ = 0;
+  std::optional<control::WalkAndJump> jumper_;
+  double last_time_left_ = 2;
+};
+
+}  // namespace olympics::client
