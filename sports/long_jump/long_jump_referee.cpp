@@ -25,10 +25,13 @@ std::optional<AttemptResult> LongJumpReferee::official_step(const JumpStep& s) {
     // TR 30.1.4: touching the ground between the line and the pit.
     if (s.on_ground && (s.front_x > line || s.ground_front_x > line))
       return decide(AttemptResult::foul("past_the_line"));
+    // Airborne past the line the athlete has taken off: the fall detector's low, tilted body is
+    // a dive into the pit, not a fall (TR 30 knows no fall foul; the landing decides).
+    const bool flying_past_line = !s.on_ground && s.front_x > line;
     if (s.in_pit) {
       landed_ = true;
       landed_at_ = s.t;
-    } else if (s.down) {
+    } else if (s.down && !flying_past_line) {
       return decide(AttemptResult::foul("fell"));
     } else if (s.t > rules_.attempt_s) {
       return decide(AttemptResult::foul("time"));

@@ -101,6 +101,21 @@ TEST(LongJumpReferee, TheTimePerAttemptAndAFallBeforeTheJumpAreFailures) {
   EXPECT_EQ(fallen.step(s)->reason, "fell");
 }
 
+TEST(LongJumpReferee, ALowBodyInTheAirPastTheLineIsADiveNotAFall) {
+  LongJumpReferee ref(official());
+  EXPECT_FALSE(ref.step(running(1.0, 19.9)));
+  JumpStep diving = flying(1.2, 21.5);
+  diving.down = true;  // the fall detector fires on a body diving feet first into the pit
+  EXPECT_FALSE(ref.step(diving));
+  const auto r = [&] {
+    ref.step(in_sand(1.4, 22.3));
+    return ref.step(in_sand(1.4 + official().settle_s, 22.3));
+  }();
+  ASSERT_TRUE(r);
+  EXPECT_TRUE(r->valid) << r->reason;
+  EXPECT_NEAR(r->mark, 2.3, 1e-9);
+}
+
 TEST(LongJumpReferee, PaperMeasuresTheMeanXAtTheFirstContactPastTheLine) {
   LongJumpRules paper;  // the seed's
   LongJumpReferee ref(paper);
