@@ -13,6 +13,10 @@
 namespace olympics::bench {
 namespace {
 
+// A standing long jump's start mark: where the scripted jumper stops behind the line to jump
+// (client::LongJumpPlan::stop_m), so the row measures its jump without its walk-up.
+constexpr double kStandingRunUp = 0.8;
+
 // The attempt's decision (the first `mark`/`foul`/`cleared`/`failure` event) of a solo episode.
 nlohmann::json decision(const std::string& sport, const nlohmann::json& options, std::uint64_t seed,
                         const std::string& policy) {
@@ -24,11 +28,14 @@ nlohmann::json decision(const std::string& sport, const nlohmann::json& options,
   return decided;
 }
 
-nlohmann::json long_jumps(const std::string& policy, const std::vector<std::uint64_t>& seeds) {
+// Official long jumps, one attempt each, from the start mark `run_up` m behind the foul line
+// (the rules' 20 m, or a standing long jump's 0.8 m: where the scripted jumper stops to jump).
+nlohmann::json long_jumps(const std::string& policy, const std::vector<std::uint64_t>& seeds,
+                          double run_up) {
   int valid = 0, fouls = 0;
   double marks = 0;
   std::map<std::string, int> endings;
-  const nlohmann::json options = {{"rules", "official"}, {"attempts", 1}};
+  const nlohmann::json options = {{"rules", "official"}, {"attempts", 1}, {"run_up", run_up}};
   for (const std::uint64_t seed : seeds) {
     const nlohmann::json e = decision("long_jump", options, seed, policy);
     if (e.is_null()) {
@@ -148,7 +155,10 @@ nlohmann::json run_athletics_bench(const AthleticsBenchOptions& o) {
     return std::find(o.events.begin(), o.events.end(), event) != o.events.end();
   };
   for (const auto& policy : o.policies) {
-    if (wanted("long_jump")) report["long_jump"][policy] = long_jumps(policy, seeds);
+    if (wanted("long_jump")) {
+      report["long_jump"][policy] = long_jumps(policy, seeds, 20.0);
+      report["standing_long_jump"][policy] = long_jumps(policy, seeds, kStandingRunUp);
+    }
     if (wanted("high_jump")) report["high_jump"][policy] = high_jumps(policy, seeds);
     if (wanted("javelin")) report["javelin"][policy] = javelin_throws(policy, seeds);
     if (wanted("hurdles"))
@@ -184,13 +194,17 @@ nlohmann::json run_athletics_bench(const AthleticsBenchOptions& o) {
 void print_athletics_report(const nlohmann::json& r) {
   std::printf("seeds %s\n", r["seeds"].get<std::string>().c_str());
   static const nlohmann::json kNone = nlohmann::json::object();  // an event not measured
-  if (r.contains("long_jump")) std::printf("long jump (official, one attempt):\n");
-  for (const auto& [policy, v] : (r.contains("long_jump") ? r["long_jump"] : kNone).items())
-    std::printf("  %-8s valid %.2f [%.2f, %.2f]  fouls %.2f [%.2f, %.2f]  mean mark %.2f m  %s\n",
-                policy.c_str(), v["valid_rate"].get<double>(), v["valid_ci95"][0].get<double>(),
-                v["valid_ci95"][1].get<double>(), v["foul_rate"].get<double>(),
-                v["foul_ci95"][0].get<double>(), v["foul_ci95"][1].get<double>(),
-                v["mean_mark_m"].get<double>(), v["endings"].dump().c_str());
+  for (const char* key : {"long_jump", "standing_long_jump"}) {
+    if (!r.contains(key)) continue;
+    std::printf("%s (official, one attempt, run-up %.1f m):\n", key,
+                std::string(key) == "long_jump" ? 20.0 : kStandingRunUp);
+    for (const auto& [policy, v] : r[key].items())
+      std::printf("  %-8s valid %.2f [%.2f, %.2f]  fouls %.2f [%.2f, %.2f]  mean mark %.2f m  %s\n",
+                  policy.c_str(), v["valid_rate"].get<double>(), v["valid_ci95"][0].get<double>(),
+                  v["valid_ci95"][1].get<double>(), v["foul_rate"].get<double>(),
+                  v["foul_ci95"][0].get<double>(), v["foul_ci95"][1].get<double>(),
+                  v["mean_mark_m"].get<double>(), v["endings"].dump().c_str());
+  }
   if (r.contains("high_jump"))
     std::printf("high jump (paper, one try): leap-over rate per bar height\n");
   for (const auto& [policy, heights] : (r.contains("high_jump") ? r["high_jump"] : kNone).items())

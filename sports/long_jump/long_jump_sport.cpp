@@ -20,7 +20,10 @@ std::vector<SettingSpec> LongJumpSport::settings() const {
                           "nearest break in the sand",
                           {"paper", "official"})
           .with_official("official"),
-      SettingSpec::number("run_up", 20.0, "m from the start mark to the foul line", 5, 45),
+      SettingSpec::number("run_up", 20.0,
+                          "m from the start mark to the foul line (the athlete's own run-up "
+                          "length; 0.5-1: a standing long jump)",
+                          0.5, 45),
       SettingSpec::number("runway_width", 1.0, "m (the seed's 1; TR 29.3: 1.22)", 0.5, 1.22)
           .with_official(1.22),
       SettingSpec::number("pit_near", 1.0, "m from the foul line to the pit (TR 29.5: 1 to 3)", 0,
