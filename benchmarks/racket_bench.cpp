@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 
 #include "bench_support.h"
 #include "core/humanoid_assets.h"
@@ -20,7 +21,15 @@ class SeedList {
   explicit SeedList(const std::string& named) {
     if (!named.empty()) seeds_ = episode_seeds(named, 0);
   }
-  std::uint64_t next() { return seeds_.empty() ? kFirstUnseenSeed + used_++ : seeds_.at(used_++); }
+  std::uint64_t next() {
+    if (seeds_.empty()) return kFirstUnseenSeed + used_++;
+    if (used_ >= seeds_.size())
+      throw std::invalid_argument(
+          "--seeds names " + std::to_string(seeds_.size()) +
+          " seeds, too few for the balls or matches asked: name more seeds, or ask for fewer "
+          "(--balls, --episodes, --matches)");
+    return seeds_[used_++];
+  }
   std::string used() const {
     if (used_ == 0) return "none";
     const std::uint64_t first = seeds_.empty() ? kFirstUnseenSeed : seeds_.front();
