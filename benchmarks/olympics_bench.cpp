@@ -4,6 +4,8 @@
 //
 // Each benchmark declares its subcommand in commands/<name>_command.cpp; `soak` runs an hour
 // and is not for CI.
+#include <cstdio>
+#include <stdexcept>
 #include <vector>
 
 #include "bench_command.h"
@@ -43,7 +45,12 @@ int main(int argc, char** argv) {
   OLYMPICS_BENCHMARKS(OLYMPICS_ADD_BENCHMARK)
 #undef OLYMPICS_ADD_BENCHMARK
   CLI11_PARSE(app, argc, argv);
-  for (const auto& command : commands)
-    if (command.chosen()) return command.run();
+  try {
+    for (const auto& command : commands)
+      if (command.chosen()) return command.run();
+  } catch (const std::invalid_argument& e) {  // a request the benchmark cannot run, said why
+    std::fprintf(stderr, "olympics-bench: %s\n", e.what());
+    return 2;
+  }
   return 0;
 }

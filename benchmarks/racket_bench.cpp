@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 
 #include "bench_support.h"
 #include "core/humanoid_assets.h"
@@ -20,7 +21,15 @@ class SeedList {
   explicit SeedList(const std::string& named) {
     if (!named.empty()) seeds_ = episode_seeds(named, 0);
   }
-  std::uint64_t next() { return seeds_.empty() ? kFirstUnseenSeed + used_++ : seeds_.at(used_++); }
+  std::uint64_t next() {
+    if (seeds_.empty()) return kFirstUnseenSeed + used_++;
+    if (used_ >= seeds_.size())
+      throw std::invalid_argument(
+          "--seeds names " + std::to_string(seeds_.size()) +
+          " seeds, too few for the balls or matches asked: name more seeds, or ask for fewer "
+          "(--balls, --episodes, --matches)");
+    return seeds_[used_++];
+  }
   std::string used() const {
     if (used_ == 0) return "none";
     const std::uint64_t first = seeds_.empty() ? kFirstUnseenSeed : seeds_.front();
@@ -88,6 +97,7 @@ nlohmann::json singles(const std::string& sport, int matches, const std::string&
   SeedList seeds(named_seeds);
   std::vector<double> strokes;
   int by_score = 0, falls = 0, strokes_now = 0;
+  nlohmann::json endings = nlohmann::json::object();  // what ended the points, by the call
   double seconds = 0;
   for (int i = 0; i < matches; ++i) {
     const auto match = play_in_process(sport, {"1v1", seeds.next(), 0.0, format},
@@ -96,8 +106,10 @@ nlohmann::json singles(const std::string& sport, int matches, const std::string&
                                            const std::string call = ev.value("call", "");
                                            if (call == "hit") ++strokes_now;
                                            if (call == "fall") ++falls;
-                                           if (call == "point")
-                                             strokes.push_back(strokes_now), strokes_now = 0;
+                                           if (call != "point") continue;
+                                           strokes.push_back(strokes_now), strokes_now = 0;
+                                           const std::string why = ev.value("reason", "");
+                                           endings[why] = endings.value(why, 0) + 1;
                                          }
                                        });
     by_score += match->outcome().reason != "time_limit";
@@ -109,7 +121,12 @@ nlohmann::json singles(const std::string& sport, int matches, const std::string&
                            : strokes[std::min(strokes.size() - 1, size_t(q * strokes.size()))];
   };
   double mean = 0;
-  for (double s : strokes) mean += s;
+  std::vector<int> histogram;  // points by their strokes: [0], [1], ...
+  for (double s : strokes) {
+    mean += s;
+    if (histogram.size() <= size_t(s)) histogram.resize(size_t(s) + 1, 0);
+    ++histogram[size_t(s)];
+  }
   return {{"matches", matches},
           {"seeds", seeds.used()},
           {"format", format},
@@ -119,7 +136,9 @@ nlohmann::json singles(const std::string& sport, int matches, const std::string&
            {{"mean", strokes.empty() ? 0 : mean / strokes.size()},
             {"median", quantile(0.5)},
             {"p90", quantile(0.9)},
-            {"longest", strokes.empty() ? 0.0 : strokes.back()}}},
+            {"longest", strokes.empty() ? 0.0 : strokes.back()},
+            {"histogram", histogram}}},
+          {"point_endings", endings},
           {"falls", falls},
           {"falls_per_minute", falls / (seconds / 60)},
           {"seconds_played", seconds}};
@@ -185,6 +204,10 @@ void print_racket_report(const nlohmann::json& report) {
           s["points"].get<int>(), k["mean"].get<double>(), k["median"].get<double>(),
           k["p90"].get<double>(), k["longest"].get<double>(), s["falls"].get<int>(),
           s["falls_per_minute"].get<double>());
+      std::string endings;
+      for (const auto& [why, n] : s["point_endings"].items())
+        endings += (endings.empty() ? "" : ", ") + why + " " + std::to_string(n.get<int>());
+      std::printf("    points ended by: %s\n", endings.c_str());
     }
     if (!r.contains("speed_1v1")) continue;
     const auto& s = r["speed_1v1"];
