@@ -155,10 +155,9 @@ nlohmann::json run_athletics_bench(const AthleticsBenchOptions& o) {
     return std::find(o.events.begin(), o.events.end(), event) != o.events.end();
   };
   for (const auto& policy : o.policies) {
-    if (wanted("long_jump")) {
-      report["long_jump"][policy] = long_jumps(policy, seeds, 20.0);
+    if (wanted("long_jump")) report["long_jump"][policy] = long_jumps(policy, seeds, 20.0);
+    if (wanted("standing_long_jump"))
       report["standing_long_jump"][policy] = long_jumps(policy, seeds, kStandingRunUp);
-    }
     if (wanted("high_jump")) report["high_jump"][policy] = high_jumps(policy, seeds);
     if (wanted("javelin")) report["javelin"][policy] = javelin_throws(policy, seeds);
     if (wanted("hurdles"))

@@ -16,7 +16,8 @@ struct AthleticsBenchOptions {
   int episodes = 50;  // per policy and event (seeds 1..N) when `seeds` is empty
   std::string seeds;  // or the seeds named: "9001-9050" (docs/figures.md)
   std::vector<std::string> policies = {"zero", "random"};
-  std::vector<std::string> events = {"long_jump", "high_jump", "javelin", "hurdles", "golf"};
+  std::vector<std::string> events = {
+      "long_jump", "standing_long_jump", "high_jump", "javelin", "hurdles", "golf"};
   double seconds = 2;  // wall seconds per speed measurement
   int repeats = 3;
   bool speed = true;

@@ -16,10 +16,13 @@ BenchCommand athletics_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   add_seeds_option(cli, o->seeds, "athletics");
   cli.add_option("--policies", o->policies, "policies (comma-separated)")->delimiter(',');
-  cli.add_option("--events", o->events,
-                 "events (comma-separated): long_jump, high_jump, javelin, hurdles, golf")
+  cli.add_option(
+         "--events", o->events,
+         "events (comma-separated): long_jump, standing_long_jump (0.8 m run-up), high_jump, "
+         "javelin, hurdles, golf")
       ->delimiter(',')
-      ->check(CLI::IsMember({"long_jump", "high_jump", "javelin", "hurdles", "golf"}));
+      ->check(CLI::IsMember(
+          {"long_jump", "standing_long_jump", "high_jump", "javelin", "hurdles", "golf"}));
   cli.add_flag("--no-speed{false}", o->speed, "skip the competition_8 ticks/s measurement");
   cli.add_option("--seconds", o->seconds, "wall seconds per speed measurement")
       ->check(CLI::PositiveNumber);

@@ -65,9 +65,9 @@ double score(const Jump& j, double pit_near) {
 
 // Seeds the search never saw (it tuned on 1-4): official attempts from a start at the jumper's
 // stop (the line 0.8 m ahead, so it stands there from the start) are marks in the pit, 1 m or
-// more past the line, or fouls with the body already over the pit (the fall detector fires in
-// the air of a diving landing), never a foul at the line. From the full runway the walk leaves
-// the body in another state and the jump fouls (docs/athletics.md).
+// more past the line, never a foul at the line (before the referee let a dive into the pit be,
+// 2 of these 6 were `fell` in the air over the pit). From the full runway the walk leaves the
+// body in another state and the jump fouls (docs/athletics.md).
 TEST(ScriptedLongJump, MakesValidMarksFromAStandingStartAtItsStop) {
   int valid = 0, n = 0;
   double marks = 0;
@@ -85,7 +85,7 @@ TEST(ScriptedLongJump, MakesValidMarksFromAStandingStartAtItsStop) {
   }
   std::printf("valid %d of %d, mean mark %.2f m: %s\n", valid, n, valid ? marks / valid : 0.0,
               nlohmann::json(endings).dump().c_str());
-  EXPECT_GE(valid, 3);
+  EXPECT_GE(valid, 5);
 }
 
 // The search that found the jump (run by hand: --gtest_also_run_disabled_tests; ITER=n
