@@ -82,15 +82,18 @@ nlohmann::json high_jumps(const std::string& policy, const std::vector<std::uint
 
 // Golf, official: one hole per seed, the distance drawn from the seed (U[1, 3] m: the scripted
 // putter was tuned on 1, 1.5, 2, 2.5 and 3 m only), 20 s and at most 6 strokes to hole out.
-// Hit = a stroke was played; the first putt's end (holed or at rest) and the hole's.
-nlohmann::json golf_holes(const std::string& policy, const std::vector<std::uint64_t>& seeds) {
-  int hit = 0, holed = 0, holed_first = 0, strokes = 0;
+// Hit = a stroke was played; the first putt's end (holed or at rest) and the hole's; fell = the
+// athlete fell during the hole (the referee's fall event).
+nlohmann::json golf_holes(const std::string& policy, const std::vector<std::uint64_t>& seeds,
+                          const std::string& address) {
+  int hit = 0, holed = 0, holed_first = 0, strokes = 0, fell = 0;
   double first_miss = 0;
   for (const std::uint64_t seed : seeds) {
     std::mt19937_64 draw(seed);
-    nlohmann::json options = {{"rules", "official"}, {"hole_s", 20}, {"max_strokes", 6}};
+    nlohmann::json options = {
+        {"rules", "official"}, {"hole_s", 20}, {"max_strokes", 6}, {"address", address}};
     options["distance"] = std::uniform_real_distribution<double>(1.0, 3.0)(draw);
-    bool first = true, in = false;
+    bool first = true, in = false, down = false;
     int taken = 0;
     play_in_process("golf", {"solo", seed, 0.0, options}, {policy},
                     [&](const sports::SportMatch& m) {
@@ -98,6 +101,7 @@ nlohmann::json golf_holes(const std::string& policy, const std::vector<std::uint
                         const std::string call = e["call"];
                         if (call == "stroke") taken = e["stroke"];
                         if (call == "holed") in = true;
+                        if (call == "fall") down = true;
                         if (first && (call == "holed" || call == "at_rest")) {
                           first = false;
                           holed_first += call == "holed";
@@ -105,7 +109,7 @@ nlohmann::json golf_holes(const std::string& policy, const std::vector<std::uint
                         }
                       }
                     });
-    hit += taken > 0, holed += in, strokes += in ? taken : 0;
+    hit += taken > 0, holed += in, strokes += in ? taken : 0, fell += down;
   }
   const int n = static_cast<int>(seeds.size());
   return {{"holes", n},
@@ -116,7 +120,10 @@ nlohmann::json golf_holes(const std::string& policy, const std::vector<std::uint
           {"mean_first_putt_distance_m", hit ? first_miss / hit : 0.0},
           {"holed_rate", static_cast<double>(holed) / n},
           {"holed_ci95", wilson_95(holed, n)},
-          {"mean_strokes_when_holed", holed ? static_cast<double>(strokes) / holed : 0.0}};
+          {"mean_strokes_when_holed", holed ? static_cast<double>(strokes) / holed : 0.0},
+          {"fell_rate", static_cast<double>(fell) / n},
+          {"fell_ci95", wilson_95(fell, n)},
+          {"address", address}};
 }
 
 // Golf, paper: the seed's shot and its metrics (hit = its contact; stop distance; success =
@@ -170,7 +177,8 @@ nlohmann::json run_athletics_bench(const AthleticsBenchOptions& o) {
     std::vector<std::string> golfers = o.policies;
     if (std::find(golfers.begin(), golfers.end(), "scripted") == golfers.end())
       golfers.push_back("scripted");  // golf has a scripted putter
-    for (const auto& policy : golfers) report["golf"][policy] = golf_holes(policy, seeds);
+    for (const auto& policy : golfers)
+      report["golf"][policy] = golf_holes(policy, seeds, o.golf_address);
   }
   if (o.speed) {
     const core::ModelSpec& smpl = core::load_humanoid(core::HumanoidKind::Smpl);
@@ -214,17 +222,19 @@ void print_athletics_report(const nlohmann::json& r) {
   print_javelin_report(r);
   if (r.contains("hurdles")) print_hurdles_report(r["hurdles"]);
   if (r.contains("golf")) {
-    std::printf("golf (official, one hole from U[1, 3] m, 20 s, max 6 strokes):\n");
+    std::printf("golf (official, one hole from U[1, 3] m, 20 s, max 6 strokes, address: %s):\n",
+                r["golf"].begin()->at("address").get<std::string>().c_str());
     for (const auto& [policy, v] : r["golf"].items())
       std::printf(
           "  %-8s hit %.2f [%.2f, %.2f]  first putt holed %.2f [%.2f, %.2f], mean %.2f m from the "
-          "hole  holed %.2f [%.2f, %.2f] in %.2f strokes\n",
+          "hole  holed %.2f [%.2f, %.2f] in %.2f strokes  fell %.2f [%.2f, %.2f]\n",
           policy.c_str(), v["hit_rate"].get<double>(), v["hit_ci95"][0].get<double>(),
           v["hit_ci95"][1].get<double>(), v["first_putt_holed_rate"].get<double>(),
           v["first_putt_holed_ci95"][0].get<double>(), v["first_putt_holed_ci95"][1].get<double>(),
           v["mean_first_putt_distance_m"].get<double>(), v["holed_rate"].get<double>(),
           v["holed_ci95"][0].get<double>(), v["holed_ci95"][1].get<double>(),
-          v["mean_strokes_when_holed"].get<double>());
+          v["mean_strokes_when_holed"].get<double>(), v["fell_rate"].get<double>(),
+          v["fell_ci95"][0].get<double>(), v["fell_ci95"][1].get<double>());
     std::printf("golf (paper, the seed's shot):\n");
     for (const auto& [policy, v] : r["golf_paper"].items())
       std::printf("  %-8s hit %.2f [%.2f, %.2f]  success %.2f [%.2f, %.2f]  mean stop %.2f m  %s\n",

@@ -21,6 +21,9 @@ struct AthleticsBenchOptions {
   double seconds = 2;  // wall seconds per speed measurement
   int repeats = 3;
   bool speed = true;
+  // Golf's `address` setting: "placed" (at address for every stroke) or "walk" (for the first
+  // only: the policy walks to its ball).
+  std::string golf_address = "placed";
 };
 
 nlohmann::json run_athletics_bench(const AthleticsBenchOptions& options);

@@ -1,5 +1,6 @@
 // olympics-bench athletics [--json] [--episodes N | --seeds A-B,..] [--policies P,..]
 //                          [--events E,..] [--no-speed] [--seconds S] [--repeats R]
+//                          [--golf-address placed|walk]
 #include "athletics_bench.h"
 #include "bench_command.h"
 
@@ -28,6 +29,10 @@ BenchCommand athletics_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   cli.add_option("--repeats", o->repeats, "interleaved repeats (median reported)")
       ->check(CLI::PositiveNumber);
+  cli.add_option("--golf-address", o->golf_address,
+                 "golf's address setting: placed (at address for every stroke) or walk (for the "
+                 "first only; the policy walks to its ball)")
+      ->check(CLI::IsMember({"placed", "walk"}));
   c.measure = [o] { return run_athletics_bench(*o); };
   c.print = print_athletics_report;
   return c;

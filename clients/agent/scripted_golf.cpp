@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "golf/golf_club.h"
 #include "smpl_observation.h"
 
 namespace olympics::client {
@@ -31,6 +32,9 @@ void ScriptedGolfPolicy::start(const MatchInfo& match) {
          l.offset("target", "position"), l.offset("play", "contact")};
   control_dt_ = match.control_dt;
   legs_.emplace(StepGains{}, control_dt_);
+  const sports::equipment::EquipmentSpec putter =
+      sports::golf::club_equipment(sports::golf::putter());
+  model_.emplace(control::BodyModel::humanoid(core::HumanoidKind::Smpl, &putter));
   arm_ = ArmDirection(Arm::Right);
   phase_ = Phase::Lower;
   phase_s_ = 0;
@@ -49,6 +53,9 @@ void ScriptedGolfPolicy::act(std::span<const float> o, std::span<float> a) {
   if (was_struck_ && !struck) phase_ = Phase::Lower, phase_s_ = 0, arm_ = ArmDirection(Arm::Right);
   was_struck_ = struck;
   phase_s_ += control_dt_;
+  if (gains_.balance_centre_of_mass)
+    legs_->balance_centre_of_mass(model_->centre_of_mass(model_->pose_from_observation(o)),
+                                  gains_.balance_ahead);
   legs_->act(o, Eigen::Vector2d::Zero(), 0.0, a);
 
   const Eigen::Vector3d shoulder = body_position(o, kRShoulder);

@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "arm_control.h"
+#include "control/body_model.h"
 #include "policies.h"
 #include "step_controller.h"
 
@@ -27,6 +28,14 @@ struct PuttGains {
   double ball_per_head = 0.95;  // ball speed per planned head speed (tuned on 1-3 m: the arm lags)
   double arrive_speed = 0.8;    // m/s the ball should reach the hole with
   double decel = 0.549;         // m/s^2 a ball slows by on the green (stimp 10)
+  // Standing on the whole body's centre of mass (arm and putter included, control/body_model.h)
+  // instead of the root, held `balance_ahead` m ahead of the ankles. Off by default: balanced on
+  // the root the putter falls about 4.4 s into a hole (with or without a stroke: the arm and
+  // club held out in front tip it), which being placed at address for each stroke hides; on the
+  // centre of mass it stays up, but its stance shifts and the swing tuned above strikes weakly
+  // (the putts end short; docs/athletics.md, "The scripted putter").
+  bool balance_centre_of_mass = false;
+  double balance_ahead = 0.0;
 };
 
 class ScriptedGolfPolicy : public Policy {
@@ -45,6 +54,7 @@ class ScriptedGolfPolicy : public Policy {
   Blocks at_;
   double control_dt_ = 0;
   std::optional<StepController> legs_;
+  std::optional<control::BodyModel> model_;  // the humanoid holding the putter
   ArmDirection arm_{Arm::Right};
   Phase phase_ = Phase::Lower;
   double phase_s_ = 0;
