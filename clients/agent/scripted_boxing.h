@@ -1,10 +1,12 @@
 // The scripted baseline for boxing: the yardstick learned boxers must beat. It reads only the
 // observation (blocks by name):
 //
-// - it faces the opponent and moves in and out (StepController): in to punching range for a
-//   combination, then back out of reach, so that the two do not stand chest to chest;
+// - it faces the opponent and walks (StepController) to punching range, each boxer closing half
+//   the gap; there it plants both feet, knees bent, and balances its centre of mass over them
+//   with the ankles; it steps again only when the distance or the opponent's bearing drifts;
 // - it holds a guard: upper arms forward and down, elbows bent, gloves up before the chin;
-// - in range it punches: left jab and right cross in turn, each arm thrown straight at the
+// - planted and in range it punches (never from a step): left jab and right cross in turn, each arm
+// thrown straight at the
 //   opponent's head or chest and drawn back to the guard;
 // - it stands still during the rest between rounds.
 #pragma once
@@ -28,8 +30,10 @@ class ScriptedBoxingPolicy : public Policy {
   Blocks blocks_;
   double control_dt_ = 0;
   std::optional<StepController> legs_;
-  double clock_s_ = 0;  // time in range, for the punches' rhythm
-  double cycle_s_ = 0;  // time into the in-and-out cycle
+  StepGains gains_;
+  bool planted_ = false;      // both feet down where they stand, punching
+  bool was_resting_ = false;  // to see the bell
+  double clock_s_ = 0;        // time in range, for the punches' rhythm
 };
 
 }  // namespace olympics::client
