@@ -26,7 +26,7 @@ struct Jump {
 const nlohmann::json kOfficial = {{"rules", "official"}, {"attempts", 1}};
 
 // One attempt by the scripted jumper. `line_x` > 0 moves the foul line (and the pit with it) to
-// that distance from the start mark, below the settings' 5 m: the search's short approach.
+// that distance from the start mark (as the `run_up` setting does): the search's short approach.
 Jump jump_once(std::uint64_t seed, const client::LongJumpPlan& plan = {},
                const nlohmann::json& settings = kOfficial, double line_x = 0) {
   const auto& sport = dynamic_cast<const LongJumpSport&>(sport_or_throw("long_jump"));
