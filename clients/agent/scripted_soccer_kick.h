@@ -30,7 +30,9 @@ struct KickGains {
   double back_s = 0.12;             // drawing the kicking foot back
   double land_s = 0.35;             // from the follow-through to the foot down
   double settle_s = 0.35;           // standing on both feet again
-  double approach_behind_m = 0.35;  // the kick starts with the root this far behind the ball
+  // The kick starts with the root this far behind the ball: from 0.35 m the plant step's weight
+  // shift knocked the ball early in 22 of 100 kicks (seeds 1-100); 0.5 on seeds 1-200.
+  double approach_behind_m = 0.5;
   double approach_side_m = 0.0;     // ...and this far to the planted foot's side of it
   double plant_lift_m = 0.1;        // the plant step's foot clearance
   double plant_side_m = 0.27;       // the planted ankle this far beside the ball's centre
