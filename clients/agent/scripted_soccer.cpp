@@ -33,8 +33,8 @@ constexpr double kRolling_mps = 0.5;      // a ball faster than this is followed
 constexpr double kKnockedAway_mps = 2.5;  // a kick gives up on a ball knocked this fast
 constexpr double kDown_m = 0.6;           // ...and on a body whose root is this low
 constexpr double kKickerWalk_mps = 0.8;   // a kicker's walking speed (StepGains::max_speed)
-constexpr double kMatchWalk_mps = 1.0;    // a player's in a match
 constexpr double kKickerWalkPerM = 1.5;   // ...and its StepGains::speed_per_m
+constexpr double kMatchWalk_mps = 1.0;    // a player's walking speed in a match
 constexpr double kArriveSpeed_mps = 3.0;  // a shot is kicked to be this fast at the goal line
 constexpr double kRollingDecel_mps2 =
     2.0;  // a kicked ball slows by about this (slides, then rolls)
