@@ -20,7 +20,8 @@ int BenchCommand::run() const {
   return status(report);
 }
 
-CLI::Option* add_seeds_option(CLI::App& cli, std::string& seeds, const std::string& what) {
+CLI::Option* add_seeds_option(CLI::App& cli, std::string& seeds, const std::string& what,
+                              const std::string& name) {
   const auto seed_list = [](const std::string& text) {
     try {
       episode_seeds(text, 0);
@@ -30,8 +31,7 @@ CLI::Option* add_seeds_option(CLI::App& cli, std::string& seeds, const std::stri
     }
   };
   return cli
-      .add_option("--seeds", seeds,
-                  what + " seeds instead, e.g. 5001-5500,7001-7200 (docs/figures.md)")
+      .add_option(name, seeds, what + " seeds instead, e.g. 5001-5500,7001-7200 (docs/figures.md)")
       ->check(seed_list);
 }
 

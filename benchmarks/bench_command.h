@@ -35,7 +35,8 @@ class BenchCommand {
 };
 
 // Adds a --seeds option (e.g. 5001-5500,7001-7200; docs/figures.md) to `cli`, refused at parsing
-// with what was wrong.
-CLI::Option* add_seeds_option(CLI::App& cli, std::string& seeds, const std::string& what);
+// with what was wrong; `name` for a second seed list (--match-seeds).
+CLI::Option* add_seeds_option(CLI::App& cli, std::string& seeds, const std::string& what,
+                              const std::string& name = "--seeds");
 
 }  // namespace olympics::bench

@@ -92,6 +92,18 @@ std::array<double, 2> wilson_95(int hits, int n) {
   return {std::max(0.0, centre - half), std::min(1.0, centre + half)};
 }
 
+std::array<double, 3> ratio_95(const std::vector<double>& counts,
+                               const std::vector<double>& exposure) {
+  const double n = static_cast<double>(counts.size());
+  double c = 0, e = 0;
+  for (size_t k = 0; k < counts.size(); ++k) c += counts[k], e += exposure[k];
+  const double rate = e > 0 ? c / e : 0;
+  double var = 0;
+  for (size_t k = 0; k < counts.size(); ++k) var += std::pow(counts[k] - rate * exposure[k], 2);
+  const double half = n > 1 && e > 0 ? 1.959964 * std::sqrt(var / (n - 1) / n) / (e / n) : 0;
+  return {rate, std::max(0.0, rate - half), rate + half};
+}
+
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];

@@ -35,6 +35,11 @@ double median(std::vector<double> v);
 std::vector<std::uint64_t> episode_seeds(const std::string& named, int n);
 // The Wilson score 95% interval of a rate: `hits` of `n` episodes.
 std::array<double, 2> wilson_95(int hits, int n);
+// A rate over episodes of different lengths, sum(counts) / sum(exposure) (e.g. falls per
+// player-minute), with its 95% interval by the delta method over episodes (ratio estimator):
+// {rate, low, high}.
+std::array<double, 3> ratio_95(const std::vector<double>& counts,
+                               const std::vector<double>& exposure);
 
 // The sum of `rate(t)` run on `threads` threads at once (t = 0..threads-1): an aggregate rate.
 double sum_over_threads(int threads, const std::function<double(int)>& rate);

@@ -34,7 +34,7 @@ nlohmann::json play(const std::string& mode, std::uint64_t seed,
 // Penalty kicks by `policy`, against a goalkeeper playing `keeper` when it is given.
 nlohmann::json penalty_kicks(const std::string& policy, const std::vector<std::uint64_t>& seeds,
                              const std::string& keeper = "") {
-  int scored = 0, touched = 0;
+  int scored = 0, touched = 0, keeper_touched = 0;
   double seconds_to_goal = 0;
   std::map<std::string, int> calls, endings;
   const int kicks = static_cast<int>(seeds.size());
@@ -46,30 +46,42 @@ nlohmann::json penalty_kicks(const std::string& policy, const std::vector<std::u
     const bool goal = r["reason"] == "goal";
     scored += goal;
     touched += touch[0];
+    if (!keeper.empty()) keeper_touched += touch[1];
     if (goal) seconds_to_goal += r["seconds"].get<double>();
     ++endings[r["reason"].get<std::string>()];
   }
-  return {{"kicks", kicks},
-          {"scored", static_cast<double>(scored) / kicks},
-          {"scored_ci95", wilson_95(scored, kicks)},
-          {"touched", static_cast<double>(touched) / kicks},
-          {"falls", calls["fall"]},
-          {"mean_s_to_goal", scored ? seconds_to_goal / scored : 0.0},
-          {"endings", endings}};
+  nlohmann::json k = {{"kicks", kicks},
+                      {"scored", static_cast<double>(scored) / kicks},
+                      {"scored_ci95", wilson_95(scored, kicks)},
+                      {"touched", static_cast<double>(touched) / kicks},
+                      {"falls", calls["fall"]},
+                      {"mean_s_to_goal", scored ? seconds_to_goal / scored : 0.0},
+                      {"endings", endings}};
+  if (!keeper.empty()) k["keeper_touched"] = static_cast<double>(keeper_touched) / kicks;
+  return k;
 }
 
-nlohmann::json scripted_matches(const std::string& mode, int matches, double half_s) {
+// Scripted-vs-scripted matches; goals per 10 minutes and falls per player-minute with their 95%
+// intervals over matches (a match is one episode: its goals and falls are not independent).
+nlohmann::json scripted_matches(const std::string& mode, const std::vector<std::uint64_t>& seeds,
+                                double half_s) {
   const int n = sports::sport_or_throw("soccer").modes().at(mode).slot_count();
   std::map<std::string, int> calls;
   int goals = 0, assists = 0, own_goals = 0;
   double minutes = 0;
   std::array<int, 2> wins{};
   int draws = 0;
-  for (int m = 1; m <= matches; ++m) {
+  std::vector<double> match_goals, match_falls, match_minutes, player_minutes;
+  for (const std::uint64_t seed : seeds) {
     std::vector<int> touch;
-    const auto r = play(mode, m, std::vector<std::string>(n, "scripted"),
+    const int falls_before = calls["fall"];
+    const auto r = play(mode, seed, std::vector<std::string>(n, "scripted"),
                         {{"half_s", half_s}, {"falls", "stand_up"}}, calls, touch);
     minutes += r["seconds"].get<double>() / 60;
+    match_minutes.push_back(r["seconds"].get<double>() / 60);
+    player_minutes.push_back(n * match_minutes.back());
+    match_goals.push_back(static_cast<double>(r["goals"].size()));
+    match_falls.push_back(calls["fall"] - falls_before);
     for (const auto& g : r["goals"]) {
       ++goals;
       assists += g.value("assist_slot", -1) >= 0;
@@ -81,10 +93,21 @@ nlohmann::json scripted_matches(const std::string& mode, int matches, double hal
     else
       ++draws;
   }
-  return {{"matches", matches}, {"minutes", minutes},
-          {"goals", goals},     {"goals_per_10_min", minutes > 0 ? 10 * goals / minutes : 0.0},
-          {"assists", assists}, {"own_goals", own_goals},
-          {"wins", wins},       {"draws", draws},
+  const auto per_minute = ratio_95(match_goals, match_minutes);
+  const auto falls = ratio_95(match_falls, player_minutes);
+  return {{"matches", static_cast<int>(seeds.size())},
+          {"minutes", minutes},
+          {"player_minutes", n * minutes},
+          {"goals", goals},
+          {"goals_per_10_min", 10 * per_minute[0]},
+          {"goals_per_10_min_ci95", {10 * per_minute[1], 10 * per_minute[2]}},
+          {"falls", calls["fall"]},
+          {"falls_per_player_min", falls[0]},
+          {"falls_per_player_min_ci95", {falls[1], falls[2]}},
+          {"assists", assists},
+          {"own_goals", own_goals},
+          {"wins", wins},
+          {"draws", draws},
           {"calls", calls}};
 }
 
@@ -97,8 +120,10 @@ nlohmann::json run_soccer_bench(const SoccerBenchOptions& o) {
   for (const auto& p : o.policies) report["penalty_kick"][p] = penalty_kicks(p, seeds);
   if (o.keeper)
     report["penalty_kick_keeper"]["scripted"] = penalty_kicks("scripted", seeds, "scripted");
+  const std::vector<std::uint64_t> match_seeds = episode_seeds(o.match_seeds, o.matches);
+  report["match_seeds"] = o.match_seeds.empty() ? "1-" + std::to_string(o.matches) : o.match_seeds;
   for (const char* mode : {"1v1", "2v2"})
-    report["scripted_" + std::string(mode)] = scripted_matches(mode, o.matches, o.half_s);
+    report["scripted_" + std::string(mode)] = scripted_matches(mode, match_seeds, o.half_s);
   if (o.speed) {
     static const core::ModelSpec smpl = core::load_humanoid(core::HumanoidKind::Smpl);
     report["speed_2v2"] = speed_vs_bare("soccer", smpl, o.seconds, o.repeats, 45, "2v2");
@@ -121,15 +146,20 @@ void print_soccer_report(const nlohmann::json& r) {
           k["mean_s_to_goal"].get<double>(), k["endings"].dump().c_str());
     }
   }
+  std::printf("match seeds %s\n", r["match_seeds"].get<std::string>().c_str());
   for (const char* mode : {"1v1", "2v2"}) {
     const auto& m = r["scripted_" + std::string(mode)];
     std::printf(
-        "scripted %s, %d matches, %.1f min: %d goals (%.1f per 10 min), assists %d, own "
-        "goals %d, wins %d-%d, draws %d\n  calls %s\n",
+        "scripted %s, %d matches, %.1f min: %d goals (%.1f per 10 min, 95%% interval %.1f-%.1f), "
+        "%d falls (%.2f per player-minute, %.2f-%.2f), assists %d, own goals %d, wins %d-%d, "
+        "draws %d\n  calls %s\n",
         mode, m["matches"].get<int>(), m["minutes"].get<double>(), m["goals"].get<int>(),
-        m["goals_per_10_min"].get<double>(), m["assists"].get<int>(), m["own_goals"].get<int>(),
-        m["wins"][0].get<int>(), m["wins"][1].get<int>(), m["draws"].get<int>(),
-        m["calls"].dump().c_str());
+        m["goals_per_10_min"].get<double>(), m["goals_per_10_min_ci95"][0].get<double>(),
+        m["goals_per_10_min_ci95"][1].get<double>(), m["falls"].get<int>(),
+        m["falls_per_player_min"].get<double>(), m["falls_per_player_min_ci95"][0].get<double>(),
+        m["falls_per_player_min_ci95"][1].get<double>(), m["assists"].get<int>(),
+        m["own_goals"].get<int>(), m["wins"][0].get<int>(), m["wins"][1].get<int>(),
+        m["draws"].get<int>(), m["calls"].dump().c_str());
   }
   if (!r.contains("speed_2v2")) return;
   const auto& v = r["speed_2v2"];

@@ -1,7 +1,8 @@
 // Soccer figures, the yardsticks learned players must beat: penalty kicks with fixed seeds
 // (1..N) for scripted, zero and random (fraction scored, fraction that touched the ball, falls,
-// how they ended), and the scripted kicker against the scripted goalkeeper; goals per 10 minutes of
-// scripted-vs-scripted 1v1 and 2v2 matches (with scorers, assists, own goals, restarts); and 2v2
+// how they ended), and the scripted kicker against the scripted goalkeeper; goals per 10 minutes
+// and falls per player-minute (95% intervals over matches) of scripted-vs-scripted 1v1 and 2v2
+// matches (with scorers, assists, own goals, restarts); and 2v2
 // ticks/s (four humanoids and the ball) against the bare physics of four humanoids, measured
 // interleaved.
 #pragma once
@@ -13,10 +14,11 @@
 namespace olympics::bench {
 
 struct SoccerBenchOptions {
-  int kicks = 100;      // penalty kicks per policy (seeds 1..N) when `seeds` is empty
-  std::string seeds;    // or the seeds named: "5001-5500" (docs/figures.md)
-  int matches = 3;      // scripted matches per team mode (seeds 1..N)
-  double half_s = 120;  // of each match (two halves)
+  int kicks = 100;          // penalty kicks per policy (seeds 1..N) when `seeds` is empty
+  std::string seeds;        // or the seeds named: "5001-5500" (docs/figures.md)
+  int matches = 3;          // scripted matches per team mode (seeds 1..N)...
+  std::string match_seeds;  // ...or the seeds named
+  double half_s = 120;      // of each match (two halves)
   std::vector<std::string> policies = {"scripted", "zero", "random"};
   double seconds = 2;  // wall seconds per speed measurement
   int repeats = 3;

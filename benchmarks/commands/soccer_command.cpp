@@ -1,4 +1,5 @@
-// olympics-bench soccer [--json] [--kicks N | --seeds A-B,..] [--matches M] [--half-s S]
+// olympics-bench soccer [--json] [--kicks N | --seeds A-B,..] [--matches M | --match-seeds A-B,..]
+//                       [--half-s S]
 //                       [--policies P,..] [--no-speed] [--no-keeper]
 #include "bench_command.h"
 #include "soccer_bench.h"
@@ -15,6 +16,7 @@ BenchCommand soccer_command(CLI::App& app) {
   add_seeds_option(cli, o->seeds, "penalty kick");
   cli.add_option("--matches", o->matches, "scripted 1v1 and 2v2 matches (seeds 1..M)")
       ->check(CLI::NonNegativeNumber);
+  add_seeds_option(cli, o->match_seeds, "match", "--match-seeds");
   cli.add_option("--half-s", o->half_s, "seconds per half of those matches")
       ->check(CLI::PositiveNumber);
   cli.add_option("--policies", o->policies, "penalty kickers (comma-separated)")->delimiter(',');

@@ -25,18 +25,20 @@ namespace olympics::client {
 
 // Tunable constants of the kick (chosen on penalty tuning seeds 1-60, never on the benchmark's).
 struct KickGains {
-  double shift_s = 0.3;             // a weight shift from one foot to the other
-  double plant_s = 0.35;            // the plant step
-  double back_s = 0.12;             // drawing the kicking foot back
-  double land_s = 0.35;             // from the follow-through to the foot down
-  double settle_s = 0.35;           // standing on both feet again
-  double approach_behind_m = 0.35;  // the kick starts with the root this far behind the ball
-  double approach_side_m = 0.0;     // ...and this far to the planted foot's side of it
-  double plant_lift_m = 0.1;        // the plant step's foot clearance
-  double plant_side_m = 0.27;       // the planted ankle this far beside the ball's centre
-  double plant_reach_m = 0.05;      // ...at most this far ahead of the centre of mass
-  double plant_behind_m = 0.1;      // ...and this far behind it
-  double backswing_m = 0.25;        // the foot drawn back this far behind the contact point
+  double shift_s = 0.3;    // a weight shift from one foot to the other
+  double plant_s = 0.35;   // the plant step
+  double back_s = 0.12;    // drawing the kicking foot back
+  double land_s = 0.35;    // from the follow-through to the foot down
+  double settle_s = 0.35;  // standing on both feet again
+  // The kick starts with the root this far behind the ball: from 0.35 m the plant step's weight
+  // shift knocked the ball early in 22 of 100 kicks (seeds 1-100); 0.5 on seeds 1-200.
+  double approach_behind_m = 0.5;
+  double approach_side_m = 0.0;  // ...and this far to the planted foot's side of it
+  double plant_lift_m = 0.1;     // the plant step's foot clearance
+  double plant_side_m = 0.27;    // the planted ankle this far beside the ball's centre
+  double plant_reach_m = 0.05;   // ...at most this far ahead of the centre of mass
+  double plant_behind_m = 0.1;   // ...and this far behind it
+  double backswing_m = 0.25;     // the foot drawn back this far behind the contact point
   double backswing_up_m = 0.15;
   double backswing_out_m = 0.0;  // ...and this far out to the kicking foot's side
   double follow_m = 0.3;         // the follow-through, past the contact point

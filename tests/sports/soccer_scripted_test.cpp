@@ -59,10 +59,11 @@ FirstKick first_kick(std::uint64_t seed) {
 // the planned speed +-20% without the kicker falling. From the penalty spot the target is the
 // empty goal's middle, straight down the field (+x), and the planned speed
 // ScriptedSoccerPolicy::shot_speed(11 m). What the kick does today, and is asserted here, over 10
-// seeded first kicks (tuning seeds): at least 7 strike the ball (a plant that knocks it away
-// gives the kick up), at least 6 leave within 10 degrees of the line, and the strikes' median speed
-// is within 20% of the plan. Single strikes spread about +-30% around it, and the kicker falls
-// after most kicks (docs/soccer.md): those parts of the test are not met yet.
+// seeded first kicks (tuning seeds): at least 9 strike the ball (a plant that knocks it away
+// gives the kick up; starting 0.35 m behind the ball only 8 did, 0.5 m: all 10), at least 8 leave
+// within 10 degrees of the line (0.35 m: 7; 0.5 m: 9), and the strikes' median speed is within
+// 20% of the plan. Single strikes spread about +-30% around it, and the kicker falls after most
+// kicks (docs/soccer.md): those parts of the test are not met yet.
 TEST(ScriptedSoccer, KicksLeaveAlongTheirLineAtThePlannedSpeedOnMedian) {
   const double planned = client::ScriptedSoccerPolicy::shot_speed(11.0);
   std::vector<double> speeds;
@@ -77,8 +78,8 @@ TEST(ScriptedSoccer, KicksLeaveAlongTheirLineAtThePlannedSpeedOnMedian) {
     along_the_line += off_deg < 10;
     speeds.push_back(speed);
   }
-  EXPECT_GE(along_the_line, 6);
-  ASSERT_GE(speeds.size(), 7u);
+  EXPECT_GE(along_the_line, 8);
+  ASSERT_GE(speeds.size(), 9u);
   std::sort(speeds.begin(), speeds.end());
   const double median = 0.5 * (speeds[(speeds.size() - 1) / 2] + speeds[speeds.size() / 2]);
   EXPECT_NEAR(median, planned, 0.2 * planned);
