@@ -48,9 +48,8 @@ struct Play {
   double balance_ahead = -0.03;    // the centre of mass held this far ahead of the ankles
   double horizon_s = 0;            // how far ahead the ball is predicted
   // The swing as an arc about the vertical through the shoulder (the arm turning as one, the
-  // face at a constant distance), at the least of `arc_speeds` that returns the ball in; 0: a
-  // straight swing at the planned speed.
-  double max_back_angle = 0;  // radians of backswing along the arc
+  // face at a constant distance), at the least of `arc_speeds` that returns the ball in.
+  double max_back_angle = 0;  // radians of backswing along the arc; 0: a straight swing
   double follow_angle = 0.5;  // radians of follow-through
   // ...and while the legs still walk to the ball (a racket held far back topples the walker).
   double walking_back_angle = 0.4;
@@ -203,7 +202,7 @@ void ScriptedRacketPolicy::plan(std::span<const float> o, const CourtFrame& cour
     if (stroke_) cost += 0.5 * std::abs(s.time - (stroke_->time_to_hit - control_dt_));
     if (cost < best_cost) best_cost = cost, best = &s, best_reachable = reachable;
   }
-  if (best && play.max_back_angle > 0) {
+  if (best && play.max_back_angle > 0 && !play.arc_speeds.empty()) {
     // The arc: about the vertical through the shoulder where the body will be at contact; a
     // forehand (turning left) right of the shoulder, a backhand left of it.
     const Eigen::Vector3d root = best_reachable ? court.root : Eigen::Vector3d(stance_of(*best));
