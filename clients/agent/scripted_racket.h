@@ -8,9 +8,11 @@
 //   the shot to a point deep in the middle of the far half: the outgoing velocity that clears the
 //   net, and the face normal and speed along a level swing that give it (control/stroke_plan.h);
 // - the arm: the face is drawn back along that level line and swung through the meeting point at
-//   the planned speed, timed to the ball; each tick the arm's joints come from inverse kinematics
-//   of the face's pose (control/limb_control.h), with gravity compensation and velocity
-//   feed-forward as PD-target offsets (control/drive_target.h), the root's motion allowed for;
+//   the planned speed, timed to the ball (tennis: an arc turned about the shoulder, at a speed
+//   the arm can deliver, the face's normal solved for that speed); each tick the arm's joints come
+//   from inverse kinematics of the face's pose (control/limb_control.h), with gravity compensation
+//   and velocity feed-forward as PD-target offsets (control/drive_target.h), the root's motion
+//   allowed for;
 // - the legs: a StepController walks toward where the ball will be met, then stands balancing
 //   the centre of mass (control/body_model.h) while the arm swings; between balls it walks home.
 // In doubles, table-tennis partners strike in turn and tennis partners take the nearer ball.
@@ -50,6 +52,8 @@ class ScriptedRacketPolicy : public Policy {
     double speed = 0;           // face speed along it
     bool reachable = false;     // from where the player stands now
     Eigen::Vector3d stance;     // where the root should be to meet it at the sweet spot
+    // An arc swing turns about the vertical through here; none: a straight swing.
+    std::optional<Eigen::Vector3d> pivot;
   };
   const std::optional<Stroke>& stroke() const { return stroke_; }
 

@@ -17,6 +17,8 @@
 #include "core/humanoid_scene.h"
 #include "core/rotation.h"
 #include "core/self_observation.h"
+#include "equipment/ball_flight.h"
+#include "equipment/swept_ball.h"
 #include "match_info.h"
 #include "racket/racket_equipment.h"
 #include "racket/racket_game.h"
@@ -168,6 +170,35 @@ TEST(StrokePlan, FaceMotionGivesTheWantedBallVelocity) {
   EXPECT_NEAR((f.ball_out - out).norm(), 0, 1e-4);
   EXPECT_NEAR(f.normal.norm(), 1, 1e-9);
   EXPECT_GT(f.normal.x(), 0);
+}
+
+// A bounced tennis ball met at the baseline: a face swung at 4 m/s (what the arm delivers) has a
+// normal that returns it over the net into the far half, checked by stepping the server's own
+// flight from the bounce; a face held still has none (the ball keeps too little of its speed).
+TEST(StrokePlan, AtTheSpeedTheArmDeliversTheReturnLandsIn) {
+  const BallPath path(sports::racket::tennis_game(1.0));
+  const Eigen::Vector3d from(-11.5, -0.5, 1.0), in(-11, 1, 2);
+  const Eigen::Vector3d face_velocity = 4 * Eigen::Vector3d(0.9, 0.44, 0).normalized();
+  const auto shot = plan_shot_at_speed(path, from, in, face_velocity, {7.5, 0}, 0.3, 0.5);
+  ASSERT_TRUE(shot.has_value());
+  EXPECT_NEAR(shot->face.speed, 4, 1e-9);
+  const double e = path.game().equipment.restitution, mu = path.game().equipment.friction;
+  const Eigen::Vector3d out =
+      sports::equipment::bounce(in, face_velocity, shot->face.normal, e, mu,
+                                sports::equipment::BallFlight::kHollowBallRollingLoss);
+  EXPECT_NEAR((out - shot->ball_out).norm(), 0, 1e-9);
+  std::optional<Eigen::Vector3d> first_bounce;
+  for (const BallSample& s : path.predict(from, out, 4.0))
+    if (s.own_bounces + s.other_bounces > 0) {
+      first_bounce = s.position;
+      break;
+    }
+  ASSERT_TRUE(first_bounce.has_value()) << "the return never came down";
+  EXPECT_GT(first_bounce->x(), 0.5) << "it should clear the net";
+  EXPECT_LT(first_bounce->x(), path.game().half_length);
+  EXPECT_LT(std::abs(first_bounce->y()), path.game().half_width(false));
+  EXPECT_FALSE(
+      plan_shot_at_speed(path, from, in, Eigen::Vector3d::Zero(), {7.5, 0}, 0.3, 0.5).has_value());
 }
 
 }  // namespace

@@ -97,4 +97,39 @@ std::optional<ShotPlan> plan_shot(const BallPath& path, const Eigen::Vector3d& f
   return best;
 }
 
+std::optional<ShotPlan> plan_shot_at_speed(const BallPath& path, const Eigen::Vector3d& from,
+                                           const Eigen::Vector3d& ball_in,
+                                           const Eigen::Vector3d& face_velocity,
+                                           const Eigen::Vector2d& target, double net_margin,
+                                           double inside) {
+  const auto& game = path.game();
+  const double e = game.equipment.restitution, mu = game.equipment.friction;
+  std::optional<ShotPlan> best;
+  double best_cost = std::numeric_limits<double>::infinity();
+  for (double azimuth = -0.6; azimuth <= 0.6 + 1e-9; azimuth += 0.1)
+    for (double elevation = -0.2; elevation <= 0.9 + 1e-9; elevation += 0.04) {
+      const Eigen::Vector3d n = normal_of(azimuth, elevation);
+      // The face must be coming at the ball, not running from it.
+      if ((ball_in - face_velocity).dot(n) >= 0) continue;
+      const Eigen::Vector3d out = bounce_off(ball_in, n, face_velocity, e, mu);
+      if (out.x() <= 0) continue;
+      const BallPath::Flight f = path.fly(from, out);
+      if (!f.lands || f.net_clearance < net_margin) continue;
+      if (f.landing.x() < inside || f.landing.x() > game.half_length - inside ||
+          std::abs(f.landing.y()) > game.half_width(false) - inside)
+        continue;
+      const double cost = (f.landing - target).norm();
+      if (cost < best_cost) {
+        best_cost = cost;
+        FaceMotion face;
+        face.normal = n;
+        face.speed = face_velocity.norm();
+        face.direction = face.speed > 1e-9 ? Eigen::Vector3d(face_velocity / face.speed) : n;
+        face.ball_out = out;
+        best = ShotPlan{out, face, f};
+      }
+    }
+  return best;
+}
+
 }  // namespace olympics::client::control

@@ -43,4 +43,14 @@ std::optional<ShotPlan> plan_shot(const BallPath& path, const Eigen::Vector3d& f
                                   double net_margin,
                                   const Eigen::Vector3d& swing = Eigen::Vector3d::Zero());
 
+// A face swung at a speed the arm can deliver: from `from`, arriving at `ball_in`, the face moving
+// at `face_velocity` (court frame), the normal (searched on a grid of azimuths and elevations)
+// whose return clears the net by `net_margin` and lands inside the far half at least `inside` m
+// from its lines, nearest `target`; nullopt when none does.
+std::optional<ShotPlan> plan_shot_at_speed(const BallPath& path, const Eigen::Vector3d& from,
+                                           const Eigen::Vector3d& ball_in,
+                                           const Eigen::Vector3d& face_velocity,
+                                           const Eigen::Vector2d& target, double net_margin,
+                                           double inside);
+
 }  // namespace olympics::client::control
