@@ -14,7 +14,7 @@
 namespace olympics::client::control {
 
 struct JumpApproach {
-  double still_s = 0.8;      // s standing still at the stop before the jump
+  double still_s = 0.8;      // s standing still at the stop before the jump; 0: jump on arriving
   double arrived_m = 0.15;   // m from the stop where it stops walking and stands
   double still_speed = 0.1;  // m/s of the root below which it counts as still
   double walk_speed = 1.2;   // m/s the walker is asked for at most (StepGains::max_speed)
