@@ -1,12 +1,13 @@
-// The scripted long jumper: it walks down its runway to a stop just behind the foul line, stands
-// until it is still, then makes a standing two-footed jump into the pit (control::WalkAndJump).
+// The scripted long jumper: it walks down its runway to a stop just behind the foul line and
+// makes a two-footed jump into the pit (control::WalkAndJump): from a start near the line it
+// stands still at its stop first; after a walk down the runway it jumps on arriving, still walking.
 // From the observation alone, by name: the foul line's point on its runway's centre and the
 // seed's goal (10 m further down the same centre line) give it the runway's direction; it
 // starts again with each attempt (the attempt's time left jumps back up).
 //
 // A floor for learned jumpers, not a long jumper an official would recognise: no run-up speed
-// at the take-off. The jump's poses and times were found by a search on tuning seeds
-// (docs/athletics.md "The scripted jumpers").
+// at the take-off beyond a walk's. The jump's poses and times were found by a search on tuning
+// seeds (docs/athletics.md "The scripted jumpers").
 #pragma once
 
 #include <optional>

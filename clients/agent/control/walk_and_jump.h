@@ -1,7 +1,7 @@
 // The scripted jumpers' attempt (long jump, high jump): walk (StepController) to a stop point,
-// face a direction, stand there still for a moment, then make a standing jump
-// (control::StandingJump) in the direction faced. The sport's policy says where the stop is and
-// which way to face, from its own observation, each tick.
+// face a direction, stand there still for a moment (or not: JumpApproach::still_s 0), then make a
+// standing jump (control::StandingJump) in the direction faced. The sport's policy says where the
+// stop is and which way to face, from its own observation, each tick.
 #pragma once
 
 #include <Eigen/Core>
