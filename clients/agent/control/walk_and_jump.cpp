@@ -56,7 +56,8 @@ void WalkAndJump::act(std::span<const float> o, const Eigen::Vector2d& stop, dou
   legs_->act(o, standing_ ? Eigen::Vector2d::Zero() : stop, facing, a);
   const bool still = standing_ && smpl::root_velocity(o).head<2>().norm() < approach_.still_speed;
   still_for_ = still ? still_for_ + control_dt_ : 0;
-  if (still_for_ >= approach_.still_s) jumping_ = 0.0;
+  // still_s 0: the jump begins on arriving, still moving (the walked-up jump was searched so).
+  if (standing_ && (approach_.still_s <= 0 || still_for_ >= approach_.still_s)) jumping_ = 0.0;
 }
 
 }  // namespace olympics::client::control

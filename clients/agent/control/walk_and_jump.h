@@ -1,7 +1,7 @@
 // The scripted jumpers' attempt (long jump, high jump): walk (StepController) to a stop point,
-// face a direction, stand there still for a moment, then make a standing jump
-// (control::StandingJump) in the direction faced. The sport's policy says where the stop is and
-// which way to face, from its own observation, each tick.
+// face a direction, stand there still for a moment (or not: JumpApproach::still_s 0), then make a
+// standing jump (control::StandingJump) in the direction faced. The sport's policy says where the
+// stop is and which way to face, from its own observation, each tick.
 #pragma once
 
 #include <Eigen/Core>
@@ -14,7 +14,7 @@
 namespace olympics::client::control {
 
 struct JumpApproach {
-  double still_s = 0.8;      // s standing still at the stop before the jump
+  double still_s = 0.8;      // s standing still at the stop before the jump; 0: jump on arriving
   double arrived_m = 0.15;   // m from the stop where it stops walking and stands
   double still_speed = 0.1;  // m/s of the root below which it counts as still
   double walk_speed = 1.2;   // m/s the walker is asked for at most (StepGains::max_speed)
