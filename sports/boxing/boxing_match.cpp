@@ -94,7 +94,15 @@ BoxingMatch::BoxingMatch(const BoxingConfig& config, const ModeSpec& mode, Layou
   hands_ = {spec.body_index("L_Hand"), spec.body_index("R_Hand")};
   for (int h = 0; h < 2; ++h) glove_centre_[h] = glove_centre(spec, hands_[h]);
   targets_ = combat::target_body_indices(spec);
-  for (int b = 0; b < 2; ++b) add_player(spec, corner(b));
+  // ODE's solver (QuickStep, 8 iterations) favours the humanoid created second: with both
+  // boxers created in slot order, slot 1 won 62 of 100 bouts of the same script against 29
+  // (seeds 100001-100100), and with the order reversed slot 0 won 59 to 28. So which boxer is
+  // created first is drawn for each bout: neither corner has the edge on average.
+  const core::RootPlacement start[2] = {corner(0), corner(1)};
+  created_first_ = std::bernoulli_distribution(0.5)(rng()) ? 1 : 0;
+  add_player(spec, start[created_first_]);
+  add_player(spec, start[1 - created_first_]);
+  if (created_first_ == 1) scene().swap_humanoids(0, 1);
   config_.ring.build(scene().world());
   std::vector<bool> is_target(spec.bodies.size(), false);
   for (int b : targets_) is_target[b] = scores_punch_on(spec.bodies[b].name);

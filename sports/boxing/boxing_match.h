@@ -47,6 +47,8 @@ class BoxingMatch : public SmplMatch {
               const MatchSettings& settings);
 
   const BoxingReferee& referee() const { return referee_; }
+  // The slot whose boxer was created first in the physics world (drawn per bout).
+  int created_first() const { return created_first_; }
   // Where a boxer's glove is (or its bare hand, when not gloved), in the world.
   Eigen::Vector3d glove_position(int slot, int hand) const;  // hand 0 left, 1 right
 
@@ -68,6 +70,7 @@ class BoxingMatch : public SmplMatch {
   std::array<Eigen::Vector3d, 2> glove_centre_;  // in each hand's frame
   std::vector<int> targets_;
   BoxingReferee referee_;
+  int created_first_ = 0;
   std::optional<TouchSensor> touches_;
   std::array<bool, 2> scored_this_tick_{};
   nlohmann::json rounds_ = nlohmann::json::array();  // every round's card, for the result

@@ -29,6 +29,12 @@ class HumanoidScene {
 
   int add_humanoid(const ModelSpec& spec, const RootPlacement& placement = {});
   int humanoid_count() const { return static_cast<int>(humanoids_.size()); }
+  // Swaps which index names humanoids a and b, not their place in the physics world: the one
+  // created first stays first in ODE's solver order (a sport that draws that order per match).
+  void swap_humanoids(int a, int b) {
+    std::swap(humanoids_[a], humanoids_[b]);
+    std::swap(action_maps_[a], action_maps_[b]);
+  }
   Humanoid& humanoid(int i) { return *humanoids_[i]; }
   const Humanoid& humanoid(int i) const { return *humanoids_[i]; }
   const ActionMap& action_map(int i) const { return *action_maps_[i]; }
