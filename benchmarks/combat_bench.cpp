@@ -90,17 +90,10 @@ BoutStats play_bouts(const std::string& sport, const std::string& p0, const std:
   return st;
 }
 
-// A rate per minute over bouts, sum(counts) / sum(minutes), with its 95% interval by the delta
-// method over bouts (ratio estimator: bouts differ in length).
+// A rate per minute over bouts (bouts differ in length): bench_support's ratio estimator.
 nlohmann::json per_minute(const std::vector<double>& counts, const std::vector<double>& minutes) {
-  const double n = static_cast<double>(counts.size());
-  double c = 0, m = 0;
-  for (size_t k = 0; k < counts.size(); ++k) c += counts[k], m += minutes[k];
-  const double rate = m > 0 ? c / m : 0;
-  double var = 0;
-  for (size_t k = 0; k < counts.size(); ++k) var += std::pow(counts[k] - rate * minutes[k], 2);
-  const double half = n > 1 && m > 0 ? 1.96 * std::sqrt(var / (n - 1) / n) / (m / n) : 0;
-  return {{"per_min", rate}, {"ci95", {std::max(0.0, rate - half), rate + half}}};
+  const auto [rate, low, high] = ratio_95(counts, minutes);
+  return {{"per_min", rate}, {"ci95", {low, high}}};
 }
 
 nlohmann::json to_json(const BoutStats& st, const std::string& sport) {
