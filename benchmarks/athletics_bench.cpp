@@ -9,13 +9,14 @@
 #include "core/humanoid_assets.h"
 #include "hurdles_bench.h"
 #include "javelin_bench.h"
+#include "scripted_long_jump.h"
 
 namespace olympics::bench {
 namespace {
 
 // A standing long jump's start mark: where the scripted jumper stops behind the line to jump
-// (client::LongJumpPlan::stop_m), so the row measures its jump without its walk-up.
-constexpr double kStandingRunUp = 0.8;
+// from a standing start, so the row measures its jump without its walk-up.
+const double kStandingRunUp = client::LongJumpPlan{}.standing.stop_m;
 
 // The attempt's decision (the first `mark`/`foul`/`cleared`/`failure` event) of a solo episode.
 nlohmann::json decision(const std::string& sport, const nlohmann::json& options, std::uint64_t seed,
