@@ -64,7 +64,7 @@ struct FreeThrowShot {
   // (which the seed turns by up to 0.12 rad) the ball came to rest in a different place on each
   // seed. So until the swing the arms point to `cradle_bearing` (rad, heading frame: the root's),
   // whatever the rim's bearing: the presented ball is then caught and settles alike on every seed
-  // (5.3-5.8 cm ahead of the palms' midpoint, 3.4-4.1 cm left, seeds 1-300). The swing still
+  // (5.3-5.8 cm ahead of the palms' midpoint, 3.4-4.0 cm left, seeds 1-300). The swing still
   // flies where the trunk faces, so from `twist_from_s` to `twist_until_s` the trunk (torso,
   // spine and chest about the vertical, a third each) turns the settled cradle by
   // `twist_gain` x (the rim's bearing at the start - `twist_to`), within +-`twist_max`, and the
@@ -72,9 +72,9 @@ struct FreeThrowShot {
   // flatter and lands short, so the release trim asks `twist_speed` m/s more per rad of twist
   // (to the left: the twists the seeds ask for are -0.02..0.15 rad).
   // Chosen on tuning seeds 1-300 (docs/basketball.md, "A cradle that settles the ball alike"):
-  // the outcome is a rough function of `cradle_bearing` (0.0395: 64 made of 300, 0.0402: 206,
-  // 0.041: 86), smoother in the twist. NaN `cradle_bearing` and 0 `twist_gain`: the cradle of
-  // before (arms to the rim's bearing, no twist).
+  // the outcome is a rough function of `cradle_bearing` (before `twist_speed`: 0.0395 / 0.0402 /
+  // 0.041 rad made 64 / 191 / 86 of 300), smoother in the twist. NaN `cradle_bearing` and 0
+  // `twist_gain`: the cradle of before (arms to the rim's bearing, no twist).
   double cradle_bearing = 0.0402;
   double twist_gain = 0.7, twist_to = -0.09, twist_max = 0.2;
   double twist_from_s = 0.55, twist_until_s = 0.85;
