@@ -113,8 +113,17 @@ double ScriptedBasketballPolicy::release_trim(std::span<const float> o) const {
                                    from_palms.z()};
   double predicted = shot_.trim_base;
   for (size_t i = 0; i < x.size(); ++i) predicted += shot_.trim_coef[i] * x[i];
-  return std::clamp((aim_.launch_speed - predicted) / shot_.trim_gain, shot_.trim_min,
-                    shot_.trim_max);
+  const double wanted = aim_.launch_speed + shot_.twist_speed * trunk_twist(clock_s_);
+  return std::clamp((wanted - predicted) / shot_.trim_gain, shot_.trim_min, shot_.trim_max);
+}
+
+double ScriptedBasketballPolicy::trunk_twist(double t) const {
+  if (shot_.twist_gain == 0 || std::isnan(first_rim_bearing_)) return 0;
+  const double s =
+      std::clamp((t - shot_.twist_from_s) / (shot_.twist_until_s - shot_.twist_from_s), 0.0, 1.0);
+  return control::minimum_jerk(s) *
+         std::clamp(shot_.twist_gain * (first_rim_bearing_ - shot_.twist_to), -shot_.twist_max,
+                    shot_.twist_max);
 }
 
 void ScriptedBasketballPolicy::start(const MatchInfo& match) {
@@ -129,6 +138,7 @@ void ScriptedBasketballPolicy::start(const MatchInfo& match) {
   ball_velocity_ = match.observation.offset("ball", "velocity");
   swing_tick_ = 0;
   trim_ = 0;
+  first_rim_bearing_ = NAN;
   aim_ = {};
   aimed_ = false;
   control_dt_ = match.control_dt;
@@ -140,7 +150,13 @@ void ScriptedBasketballPolicy::act(std::span<const float> o, std::span<float> a)
     throw std::invalid_argument("the scripted basketball policy plays the SMPL-X humanoid");
   std::fill(a.begin(), a.end(), 0.0f);
   const Eigen::Vector3d rim = vec3(o, rim_);
-  double bearing = std::atan2(rim.y(), rim.x()) + shot_.aim_offset;
+  const double rim_bearing = std::atan2(rim.y(), rim.x());
+  if (std::isnan(first_rim_bearing_)) first_rim_bearing_ = rim_bearing;
+  double bearing = rim_bearing + shot_.aim_offset;
+  const double t = clock_s_;
+  const double twist = trunk_twist(t);
+  for (int link : {kTorso, kSpine, kChest}) set_joint(a, link, 2, twist / 3);
+  if (!std::isnan(shot_.cradle_bearing) && t < shot_.shot_s) bearing = shot_.cradle_bearing + twist;
   const ArmPose hold{shot_.hands_apart, shot_.hold_elevation, shot_.palm_roll,
                      shot_.hold_elbow,  shot_.wrist_up,       shot_.finger_curl};
   // The hands come forward low, under the presented ball, then rise to it.
@@ -149,7 +165,6 @@ void ScriptedBasketballPolicy::act(std::span<const float> o, std::span<float> a)
   ArmPose under = hold;
   under.elevation = hold.elevation - shot_.under;
   ArmPose pose;
-  const double t = clock_s_;
   if (t < 0.25) {
     pose = blend(ArmPose{}, low, t / 0.25);
   } else if (t < 0.45) {

@@ -3,7 +3,9 @@
 //
 // - cradle: both arms forward and down, rolled palms up, elbows and fingers bent up, so the
 //   presented ball lies in the cup of the two hands and is held there by its weight and by
-//   friction (nothing else holds it: the server has no grip);
+//   friction (nothing else holds it: the server has no grip); the arms point the same way on
+//   every throw (`cradle_bearing`), so the ball settles in the same place of the cup, and the
+//   trunk then twists the settled cradle round towards the rim (`twist_*`);
 // - shot: at `shot_s` both arms swing up in the vertical plane through the rim as fast as their
 //   drives allow (a step of their targets), elbows and fingers closing; the ball leaves the
 //   hands about 60 degrees up. Aimed by the ballistic solution: from where the ball lies in the
@@ -57,6 +59,26 @@ struct FreeThrowShot {
   double fixed_elevation = NAN;  // set: swing there whatever the aim says (measuring `swing`)
   double aim_offset = 0.008;     // rad added to the rim's bearing (the swing pulls aside)
   double shot_elbow = 0.492;     // rad: the elbows in the swing
+  // The cradle settled the same way on every throw (issue 30, third round). Where the ball lies in
+  // the cup when the swing starts decides the throw, and with the arms turned to the rim's bearing
+  // (which the seed turns by up to 0.12 rad) the ball came to rest in a different place on each
+  // seed. So until the swing the arms point to `cradle_bearing` (rad, heading frame: the root's),
+  // whatever the rim's bearing: the presented ball is then caught and settles alike on every seed
+  // (5.3-5.8 cm ahead of the palms' midpoint, 3.4-4.0 cm left, seeds 1-300). The swing still
+  // flies where the trunk faces, so from `twist_from_s` to `twist_until_s` the trunk (torso,
+  // spine and chest about the vertical, a third each) turns the settled cradle by
+  // `twist_gain` x (the rim's bearing at the start - `twist_to`), within +-`twist_max`, and the
+  // arms with it; the swing then goes to the rim's bearing as before. A twisted throw leaves
+  // flatter and lands short, so the release trim asks `twist_speed` m/s more per rad of twist
+  // (to the left: the twists the seeds ask for are -0.02..0.15 rad).
+  // Chosen on tuning seeds 1-300 (docs/basketball.md, "A cradle that settles the ball alike"):
+  // the outcome is a rough function of `cradle_bearing` (before `twist_speed`: 0.0395 / 0.0402 /
+  // 0.041 rad made 64 / 191 / 86 of 300), smoother in the twist. NaN `cradle_bearing` and 0
+  // `twist_gain`: the cradle of before (arms to the rim's bearing, no twist).
+  double cradle_bearing = 0.0402;
+  double twist_gain = 0.7, twist_to = -0.09, twist_max = 0.2;
+  double twist_from_s = 0.55, twist_until_s = 0.85;
+  double twist_speed = 0.5;
   // The release trimmed by feedback. The swing lifts the ball off the palms in its third control
   // tick, when the fingers strike it a second time (throws without that strike leave flat and
   // slow: they miss whatever the aim), and that tick's arm elevation changes how fast it leaves,
@@ -104,6 +126,8 @@ class ScriptedBasketballPolicy : public Policy {
  private:
   FreeThrowAim aim_for(std::span<const float> observation) const;
   double release_trim(std::span<const float> observation) const;
+  // rad the trunk is turned at `t` s (see FreeThrowShot::twist_gain).
+  double trunk_twist(double t) const;
 
   FreeThrowShot shot_;
   FreeThrowAim aim_;
@@ -113,6 +137,7 @@ class ScriptedBasketballPolicy : public Policy {
   int ball_velocity_ = 0;
   int swing_tick_ = 0;  // control ticks since the swing began (1: its first)
   double trim_ = 0;
+  double first_rim_bearing_ = NAN;  // rad, heading frame, at the first tick
   double control_dt_ = 0;
   double clock_s_ = 0;
 };

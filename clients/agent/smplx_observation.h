@@ -29,6 +29,9 @@ enum Body {
   kRHip = 5,
   kRKnee = 6,
   kRAnkle = 7,
+  kTorso = 9,  // the trunk's three links: torso, spine, chest
+  kSpine = 10,
+  kChest = 11,
   kLThorax = 14,
   kLShoulder = 15,
   kLElbow = 16,

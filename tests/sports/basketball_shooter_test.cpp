@@ -20,16 +20,18 @@ namespace {
 
 using Eigen::Vector3d;
 
-// A seed the baseline makes (of seeds 1..100 it makes 1, 7, 16, 18, 24, 25, 34, 55, 59, 60, 67, 77,
-// 80, 85, 92 and 97 with its release trimmed and its swing turned; untrimmed, as before issue 30,
-// it made 12, 16, 24, 25, 67, 77 and 92).
-constexpr std::uint64_t kMadeSeed = 24;
+// A seed the baseline makes (of seeds 1..100 it makes 73, among them 2-4, 7-12, 16, 17, 19-21, 23,
+// 25 and 26, with its cradle settled alike on every seed and its trunk twisted towards the rim;
+// with the cradle turned to the rim, 1, 7, 16, 18, 24, 25, 34, 55, 59, 60, 67, 77, 80, 85, 92 and
+// 97; untrimmed, as before issue 30, 12, 16, 24, 25, 67, 77 and 92).
+constexpr std::uint64_t kMadeSeed = 25;
 
 struct Throw {
   std::string reason;
   float score = 0;
   double highest_m = 0;            // the ball's highest point
   double ball_from_palms_m = 1e9;  // at the swing's start: the ball from the palms' midpoint
+  double ball_ahead_m = NAN;       // the same, towards the rim (horizontally)
   // The ball's speed on the first tick after the swing's start that it is clear of the palms (its
   // centre 0.2 m from their midpoint), as the bench measures the release; 0: never clear.
   double release_speed = 0;
@@ -58,14 +60,18 @@ Throw shoot(std::uint64_t seed, const nlohmann::json& settings = {},
   std::vector<float> obs(m->obs_size()), act(m->action_size());
   Throw t;
   const core::Humanoid& h = std::as_const(b).scene().humanoid(0);
-  auto ball_from_palms = [&] {
-    const Vector3d palms = 0.5 * (palm_centre(h, 17, 0.0523) + palm_centre(h, 36, -0.0537));
-    return (b.ball().position() - palms).norm();
+  auto palms = [&]() -> Vector3d {
+    return 0.5 * (palm_centre(h, 17, 0.0523) + palm_centre(h, 36, -0.0537));
   };
+  auto ball_from_palms = [&] { return (b.ball().position() - palms()).norm(); };
   const int swing_tick = static_cast<int>(shot.shot_s * 30);
   Vector3d towards_rim = Vector3d::UnitX();
   for (int tick = 0; tick < 6 * 30 && !m->outcome().match_over; ++tick) {
-    if (tick == swing_tick) t.ball_from_palms_m = ball_from_palms();
+    if (tick == swing_tick) {
+      t.ball_from_palms_m = ball_from_palms();
+      const Vector3d ball = b.ball().position();
+      t.ball_ahead_m = Vector3d(-ball.x(), -ball.y(), 0).normalized().dot(ball - palms());
+    }
     m->observe(0, obs);
     shooter.act(obs, act);
     m->step({std::span<const float>(act)});
@@ -124,10 +130,11 @@ TEST(ScriptedFreeThrow, AimsByTheBallisticSolution) {
 }
 
 TEST(ScriptedFreeThrow, MakesFreeThrowsFromNearerLinesWhereTheSearchedSwingCannot) {
-  // Seeds 1..100 from 3.6 and 4.0 m (the line 1 and 0.6 m nearer). Measured: 18 of the 200 made
-  // by the aimed swing (from 4.0 m with its release trimmed, 3.6 m untrimmed: 11 and 7; 16 in all
-  // before issue 30; trimmed from 3.6 m too, 11), 4 by the search's swing (2.596 rad, untrimmed)
-  // kept whatever the line (with the livelier ball of before issue 33: 8 and 1, untrimmed).
+  // Seeds 1..100 from 3.6 and 4.0 m (the line 1 and 0.6 m nearer). Measured: 61 of the 200 made
+  // by the aimed swing (from 4.0 m with its release trimmed, 3.6 m untrimmed), 0 by the search's
+  // swing (2.596 rad, untrimmed) kept whatever the line; with the cradle of before, turned to
+  // the rim: 18 and 4 (16 aimed before issue 30; with the livelier ball of before issue 33: 8
+  // and 1, untrimmed).
   client::FreeThrowShot kept;
   kept.fixed_elevation = 2.596;
   kept.trim_tick = 0;  // the search's swing as it was: untrimmed
@@ -146,10 +153,10 @@ TEST(ScriptedFreeThrow, MakesFreeThrowsFromNearerLinesWhereTheSearchedSwingCanno
 TEST(ScriptedFreeThrow, TheReleaseTrimBringsTheBallsSpeedNearerTheSolution) {
   // 20 seeded throws from the rule's line (seeds 201..220: tuning seeds, not among the 1..200 the
   // trim was fitted on): how many leave the hands within 0.2 m/s of the ballistic solution's
-  // speed, with the release trimmed by feedback and without. Measured: 12 of 20 trimmed, 1
-  // untrimmed; over seeds 1..300, 125 and 24 of 300. Issue 30 asks for most of 20: met here, not
-  // in general (42% of 300, and of 2,400 unseen seeds; 5 to 12 in each 20 before the turn), so the
-  // test asks for what the trim reliably does.
+  // speed, with the release trimmed by feedback and without. Measured: 17 of 20 trimmed, 1
+  // untrimmed (with the cradle of before, turned to the rim: 12 and 1; over seeds 1..300, 125
+  // and 24 of 300). Issue 30's "most of 20" is MostOf20ThrowsLeave... below; this asks for what
+  // the trim does.
   client::FreeThrowShot untrimmed;
   untrimmed.trim_tick = 0;
   int trimmed_within = 0, untrimmed_within = 0;
@@ -169,8 +176,10 @@ TEST(ScriptedFreeThrow, TheSwingsTurnMovesTheThrowsLeftTowardsTheRimsCentre) {
   // trim was fitted on), with the swing turned left from the trim's tick and without: where the
   // throws that rise above the rim come down through its height, sideways. Without the turn they
   // come down right of the centre (over seeds 1..300, the straight ones 8 cm right in the median,
-  // the pulled ones 0.5 m). Measured: median 0.104 m right turned, 0.147 m unturned (23 and 24
-  // throws; seeds 201..300: 0.053 and 0.089 m).
+  // the pulled ones 0.5 m). Measured with the cradle of before (turned to the rim): median
+  // 0.104 m right turned, 0.147 m unturned (23 and 24 throws); with the cradle settled alike
+  // and the trunk twisted (issue 30, third round): 0.011 m left turned, 0.033 m right unturned
+  // (39 and 39 throws).
   client::FreeThrowShot unturned;
   unturned.trim_turn = 0;
   std::vector<double> turned_side, unturned_side;
@@ -191,8 +200,81 @@ TEST(ScriptedFreeThrow, TheSwingsTurnMovesTheThrowsLeftTowardsTheRimsCentre) {
       "side at the rim (left +), median, seeds 201..240: turned %.3f m (%zu), unturned %.3f m "
       "(%zu)\n",
       turned, turned_side.size(), before, unturned_side.size());
-  EXPECT_LT(before, -0.05) << "without the turn the throws come down right of the centre";
+  EXPECT_LT(before, 0) << "without the turn the throws come down right of the centre";
   EXPECT_GE(turned, before + 0.02) << "the turn should move them left";
+}
+
+// The shooter's cradle of before issue 30's third round: the arms turned to the rim's bearing
+// from the start, no twist of the trunk.
+client::FreeThrowShot cradle_turned_to_the_rim() {
+  client::FreeThrowShot shot;
+  shot.cradle_bearing = NAN;
+  shot.twist_gain = 0;
+  return shot;
+}
+
+TEST(ScriptedFreeThrow, TheCradleSettlesTheBallInTheSamePlaceOfTheCupOnEverySeed) {
+  // 20 seeded throws (seeds 201..220, tuning seeds): where the ball lies when the swing starts,
+  // ahead of the palms' midpoint towards the rim. Throws whose ball lay less than 5 cm ahead
+  // went in 1 time in 121 (seeds 1..300, the cradle of before). With the arms cradling at the
+  // same bearing on every seed the ball settles alike. Measured: 5.3-5.9 cm ahead on all 20;
+  // the cradle turned to the rim: 3.7-24.8 cm, 7 of 20 between 5 and 6.5 cm.
+  int settled = 0, settled_before = 0;
+  double lowest = 1, highest = -1;
+  for (std::uint64_t seed = 201; seed <= 220; ++seed) {
+    const double ahead = shoot(seed).ball_ahead_m;
+    const double before = shoot(seed, {}, cradle_turned_to_the_rim()).ball_ahead_m;
+    settled += ahead >= 0.05 && ahead <= 0.065;
+    settled_before += before >= 0.05 && before <= 0.065;
+    lowest = std::min(lowest, ahead), highest = std::max(highest, ahead);
+  }
+  std::printf("ball 5-6.5 cm ahead at the swing, seeds 201..220: %d (%.3f-%.3f m), before %d\n",
+              settled, lowest, highest, settled_before);
+  EXPECT_EQ(settled, 20);
+  EXPECT_LT(highest - lowest, 0.015) << "the same place of the cup on every seed";
+}
+
+TEST(ScriptedFreeThrow, MostOf20ThrowsLeaveTheHandsWithin02MetresASecondOfTheSolution) {
+  // Issue 30: a shot from the free-throw line leaves the hands within 0.2 m/s of the ballistic
+  // solution's speed in most of 20 seeded throws. Seeds 201..220 (tuning seeds), the release
+  // measured as the bench measures it. Measured: 17 of 20 (over seeds 1..300, 260; on unseen
+  // seeds, docs/basketball.md); with the cradle turned to the rim (before): 13 of 20 here, 125
+  // of 300 (42%, and 42% of 2,400 unseen seeds). Asked: 15 of 20, three in four.
+  int within = 0;
+  for (std::uint64_t seed = 201; seed <= 220; ++seed) {
+    const Throw t = shoot(seed);
+    within += std::abs(t.release_speed - t.aim.launch_speed) <= 0.2;
+  }
+  std::printf("within 0.2 m/s of the solution, seeds 201..220: %d of 20\n", within);
+  EXPECT_GE(within, 15);
+}
+
+TEST(ScriptedFreeThrow, TheTrunksTwistTurnsTheSettledCradleTowardsTheRim) {
+  // 40 seeded throws (seeds 201..240, tuning seeds) with the cradle settled at its fixed bearing,
+  // with the trunk's twist and without: how far aside of the rim's centre they come down. The
+  // swing flies where the trunk faces, so untwisted the throws go the same way whatever the
+  // seed turned the rim by. Measured: 0.080 m aside twisted (median), 0.284 m untwisted (made:
+  // 21 and 16 of the 40).
+  client::FreeThrowShot untwisted;
+  untwisted.twist_gain = 0;
+  std::vector<double> twisted_aside, untwisted_aside;
+  for (std::uint64_t seed = 201; seed <= 240; ++seed) {
+    const Throw t = shoot(seed), u = shoot(seed, {}, untwisted);
+    if (!std::isnan(t.side_at_rim_m)) twisted_aside.push_back(std::abs(t.side_at_rim_m));
+    if (!std::isnan(u.side_at_rim_m)) untwisted_aside.push_back(std::abs(u.side_at_rim_m));
+  }
+  auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+  };
+  ASSERT_GE(twisted_aside.size(), 30u);
+  ASSERT_GE(untwisted_aside.size(), 30u);
+  const double twisted = median(twisted_aside), before = median(untwisted_aside);
+  std::printf(
+      "aside of the rim's centre, median, seeds 201..240: twisted %.3f m, untwisted %.3f m\n",
+      twisted, before);
+  EXPECT_LT(twisted, 0.12);
+  EXPECT_LT(twisted, 0.5 * before);
 }
 
 TEST(ScriptedFreeThrow, AimsWithTheServersBallDrag) {
