@@ -169,8 +169,8 @@ nlohmann::json run_athletics_bench(const AthleticsBenchOptions& o) {
     if (wanted("high_jump")) report["high_jump"][policy] = high_jumps(policy, seeds);
     if (wanted("javelin")) report["javelin"][policy] = javelin_throws(policy, seeds);
     if (wanted("hurdles"))
-      for (const char* rules : {"paper", "official"})
-        report["hurdles"][rules][policy] = hurdles_races(policy, seeds, {{"rules", rules}});
+      for (const auto& [name, options] : hurdles_rule_sets())
+        report["hurdles"][name][policy] = hurdles_races(policy, seeds, options);
     if (wanted("golf")) report["golf_paper"][policy] = golf_shots(policy, seeds);
   }
   if (wanted("javelin")) report["javelin_flight"] = javelin_flight(seeds);

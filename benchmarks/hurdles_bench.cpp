@@ -8,6 +8,12 @@
 
 namespace olympics::bench {
 
+std::vector<std::pair<std::string, nlohmann::json>> hurdles_rule_sets() {
+  return {{"paper", {{"rules", "paper"}}},
+          {"official", {{"rules", "official"}}},
+          {"official_100m", {{"rules", "official"}, {"race", "100m"}}}};
+}
+
 nlohmann::json hurdles_races(const std::string& policy, const std::vector<std::uint64_t>& seeds,
                              const nlohmann::json& options) {
   int finished = 0;

@@ -71,6 +71,9 @@ class StepController {
 
   bool stepping() const { return stepping_; }
 
+  // The swing foot's clearance from the next step on (stepping over something low).
+  void set_lift(double metres) { gains_.lift = metres; }
+
   // Standing, balance the whole body's centre of mass instead of the root: `offset` is where it
   // is (heading frame, from the root; control::BodyModel::centre_of_mass), held `ahead` metres in
   // front of the ankles. For players whose arms carry weight out in front (a racket).
