@@ -6,7 +6,10 @@
 //   ball, going round the ball when it stands on the wrong side; lined up, it walks through the
 //   ball: its swinging feet knock it on, a dribble that ends in a shot when the feet meet the
 //   ball at speed. It aims at the goal's middle, or with a keeper in the goal, inside the post
-//   away from the keeper;
+//   away from the keeper. In a match a ball within 11 m of the goal is kicked (SoccerKick), not
+//   dribbled;
+// - in a match a player keeps off a ball an opponent is nearer (1.5 m, goal-side, beside the
+//   opponent's way to the goal): most falls came from players walking into each other;
 // - the goalkeeper (penalty_kick_keeper, the side defending the near goal) stands on its line
 //   between the ball and the goal's middle, moves across to where a shot will cross the line
 //   and spreads its arms to block;
@@ -38,6 +41,10 @@ class ScriptedSoccerPolicy : public Policy {
   // The direction of the last kick (heading frame) and its speed; for tests.
   const Eigen::Vector2d& kick_direction() const { return kick_direction_; }
   double kick_speed() const { return kick_speed_; }
+  // What it did on the last tick: "keeper", "keep_back", "support", "yield" (an opponent has
+  // the ball), "approach", "round", "push" (the dribble), "shoot_approach", "kick"; for
+  // diagnosis and tests.
+  const char* doing() const { return doing_; }
 
   // What the player sees, from the observation (heading frame, from the root).
   struct View {
@@ -45,6 +52,7 @@ class ScriptedSoccerPolicy : public Policy {
     Eigen::Vector2d goal, own_goal;  // centres of the goal I attack and the one I defend
     std::optional<Eigen::Vector2d> teammate;
     std::vector<Eigen::Vector2d> opponents;
+    std::vector<bool> opponent_down;
     bool theirs_to_take = false;  // the other side has a restart to take
     bool mate_down = false;
   };
@@ -63,14 +71,16 @@ class ScriptedSoccerPolicy : public Policy {
   };
   Blocks blocks_;
   double control_dt_ = 0;
+  bool penalty_ = false;        // penalty_kick or penalty_kick_keeper
   bool keeper_mode_ = false;    // penalty_kick_keeper
   std::optional<bool> keeper_;  // am I the keeper (decided on the first tick)
   std::optional<StepController> legs_;
   std::shared_ptr<control::BodyModel> model_;  // shared: a policy may be copied
-  std::shared_ptr<SoccerKick> kick_;           // penalty modes only
-  Eigen::Vector2d kick_direction_{1, 0};       // heading frame
-  double kick_speed_ = 0;                      // m/s the ball is kicked at
-  bool lined_up_ = false;                      // behind the ball and facing the aim: pushing it on
+  std::shared_ptr<SoccerKick> kick_;
+  Eigen::Vector2d kick_direction_{1, 0};  // heading frame
+  double kick_speed_ = 0;                 // m/s the ball is kicked at
+  const char* doing_ = "";
+  bool lined_up_ = false;  // behind the ball and facing the aim: pushing it on
 };
 
 }  // namespace olympics::client
