@@ -85,7 +85,6 @@ Attempt jump_once(std::uint64_t seed, const client::HighJumpPlan& plan,
     const Eigen::Vector3d root_before = m.athlete(0).body_state(0).position;
     const double rear_before = rearmost_x(m.athlete(0));
     m.step({std::span<const float>(act)});
-    at.bar_moved = std::max(at.bar_moved, (m.bar(0).position() - bar_rest).norm());
     if (at.touch_t < 0) {
       const int b = body_touching_bar(m.athlete(0), m.bar(0));
       if (b >= 0) {
@@ -101,6 +100,9 @@ Attempt jump_once(std::uint64_t seed, const client::HighJumpPlan& plan,
         at.rear_x = (back_on_mark ? rear_before : rearmost_x(m.athlete(0))) - rules.bar_x;
         at.root = back_on_mark ? root_before : m.athlete(0).body_state(0).position;
       }
+    // Until the decision: a clearance in a series puts the bar up for the next height.
+    if (at.decision.is_null())
+      at.bar_moved = std::max(at.bar_moved, (m.bar(0).position() - bar_rest).norm());
   }
   if (at.decision.is_null()) at.root = m.athlete(0).body_state(0).position;
   at.root -= Eigen::Vector3d(rules.bar_x, rules.bar_y, 0);
