@@ -30,6 +30,7 @@ struct Attempt {
   double touch_t = -1;      // s: when
   double touch_top = 0;     // m: that body's origin above the bar's top then
   double bar_moved = 0;     // m: the most the bar's middle moved from where it rested
+  double top_z = 0;         // m: the highest any body's origin got before the decision
 };
 
 // The athlete's first body whose geoms touch the crossbar's, or -1.
@@ -101,8 +102,11 @@ Attempt jump_once(std::uint64_t seed, const client::HighJumpPlan& plan,
         at.root = back_on_mark ? root_before : m.athlete(0).body_state(0).position;
       }
     // Until the decision: a clearance in a series puts the bar up for the next height.
-    if (at.decision.is_null())
+    if (at.decision.is_null()) {
       at.bar_moved = std::max(at.bar_moved, (m.bar(0).position() - bar_rest).norm());
+      for (int b = 0; b < m.athlete(0).body_count(); ++b)
+        at.top_z = std::max(at.top_z, m.athlete(0).body_state(b).position.z());
+    }
   }
   if (at.decision.is_null()) at.root = m.athlete(0).body_state(0).position;
   at.root -= Eigen::Vector3d(rules.bar_x, rules.bar_y, 0);
@@ -248,10 +252,10 @@ TEST(ScriptedHighJumpProbe, DISABLED_Attempts) {
     std::printf(
         "seed %d: %s rear %.2f, root at the end %.2f %.2f %.2f from the bar; jump at %.2f s from "
         "%.2f %.2f moving %.2f %.2f; first touch %s at %.2f s, %.2f m above the bar; bar moved "
-        "%.3f m\n",
+        "%.3f m; highest body %.2f m\n",
         seed, at.decision.dump().c_str(), at.rear_x, at.root.x(), at.root.y(), at.root.z(),
         at.jump_t, at.jump_root.x(), at.jump_root.y(), at.jump_velocity.x(), at.jump_velocity.y(),
-        at.first_touch.c_str(), at.touch_t, at.touch_top, at.bar_moved);
+        at.first_touch.c_str(), at.touch_t, at.touch_top, at.bar_moved, at.top_z);
   }
 }
 
