@@ -80,7 +80,16 @@ Eigen::Vector3d Crossbar::end(int side) const {
 }
 
 bool Crossbar::in_place() const {
-  return end(-1).z() > rest_centre_z() - kDislodged && end(1).z() > rest_centre_z() - kDislodged;
+  // TR 27.2(a): the bar must remain on the supports. Each end no more than kDislodged below where
+  // it rests, and its axis still over its support across the bar (within half the support's
+  // depth of where it rests): a bar pushed along at its height, on a head or a chest, is off its
+  // supports though its ends have not dropped.
+  for (const int side : {-1, 1}) {
+    const Eigen::Vector3d e = end(side);
+    if (e.z() < rest_centre_z() - kDislodged || std::abs(e.x() - x_) > 0.5 * rules_.support_depth)
+      return false;
+  }
+  return true;
 }
 
 }  // namespace olympics::sports::high_jump

@@ -23,7 +23,8 @@ class Crossbar {
   // Supports at `height` and the bar back on them at rest.
   void set(double height);
   double height() const { return height_; }
-  // Both ends of the bar within 2 cm of where they rest: not dislodged.
+  // Both ends of the bar no more than 2 cm below where they rest and still over their supports
+  // across the bar: not dislodged.
   bool in_place() const;
   Eigen::Vector3d position() const;
   Eigen::Quaterniond orientation() const;

@@ -1,6 +1,7 @@
 #include "control/walk_and_jump.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "smpl_observation.h"
 
@@ -8,8 +9,7 @@ namespace olympics::client::control {
 namespace {
 
 StepGains walker_gains(const JumpApproach& approach) {
-  StepGains g;
-  g.max_speed = approach.walk_speed;
+  StepGains g = approach.walk;
   // It turns toward where it will jump only while walking there: stepping round on the spot
   // (StepGains::turn_start) overshot and stepped to and fro for the rest of the attempt.
   g.turn_start = 0;
@@ -24,6 +24,32 @@ bool feet_down(std::span<const float> o) {
 }
 
 }  // namespace
+
+Eigen::Vector2d WalkAndJump::walk_target(const Eigen::Vector2d& stop, double facing) const {
+  if (approach_.line_lead_m <= 0) return stop;
+  // The root is at the origin; `along` < 0 is how far before the stop it is, along the line.
+  const Eigen::Vector2d line(std::cos(facing), std::sin(facing));
+  const double along = -stop.dot(line);
+  return stop + line * std::min(0.0, along + approach_.line_lead_m);
+}
+
+bool WalkAndJump::arrived(const Eigen::Vector2d& stop, double facing) const {
+  if (approach_.line_lead_m <= 0 || approach_.arrived_side_m <= 0)
+    return stop.norm() < approach_.arrived_m;
+  // On the line it counts how far is left along it: a jump a little to one side of the stop
+  // goes the same way, where overshooting it along the line walks into what it jumps.
+  const Eigen::Vector2d line(std::cos(facing), std::sin(facing));
+  const double ahead = stop.dot(line), side = (stop - ahead * line).norm();
+  return ahead < approach_.arrived_m && side < approach_.arrived_side_m;
+}
+
+double WalkAndJump::walk_turn(const Eigen::Vector2d& stop, const Eigen::Vector2d& target,
+                              double facing) const {
+  // Walking onto the line from afar it faces where it walks (the walker's sideways steps are
+  // slower), and turns to the jump's way once it is on the line's last line_lead_m.
+  if (approach_.line_lead_m <= 0 || standing_ || (target - stop).norm() < 1e-9) return facing;
+  return std::atan2(target.y(), target.x());
+}
 
 WalkAndJump::WalkAndJump(const JumpApproach& approach, double control_dt)
     : approach_(approach), control_dt_(control_dt) {
@@ -49,11 +75,12 @@ void WalkAndJump::act(std::span<const float> o, const Eigen::Vector2d& stop, dou
   // is (a fresh controller stands when its target is where it is): the walker itself stops
   // only within 0.12 m and slower than 0.25 m/s at a step's end, and near a stop it tends to
   // step to and fro round it for the rest of the attempt.
-  if (!standing_ && stop.norm() < approach_.arrived_m && feet_down(o)) {
+  if (!standing_ && arrived(stop, facing) && feet_down(o)) {
     legs_.emplace(walker_gains(approach_), control_dt_);
     standing_ = true;
   }
-  legs_->act(o, standing_ ? Eigen::Vector2d::Zero() : stop, facing, a);
+  const Eigen::Vector2d target = standing_ ? Eigen::Vector2d::Zero() : walk_target(stop, facing);
+  legs_->act(o, target, walk_turn(stop, target, facing), a);
   const bool still = standing_ && smpl::root_velocity(o).head<2>().norm() < approach_.still_speed;
   still_for_ = still ? still_for_ + control_dt_ : 0;
   // still_s 0: the jump begins on arriving, still moving (the walked-up jump was searched so).

@@ -17,7 +17,16 @@ struct JumpApproach {
   double still_s = 0.8;      // s standing still at the stop before the jump; 0: jump on arriving
   double arrived_m = 0.15;   // m from the stop where it stops walking and stands
   double still_speed = 0.1;  // m/s of the root below which it counts as still
-  double walk_speed = 1.2;   // m/s the walker is asked for at most (StepGains::max_speed)
+  // The walker's gains (its top speed max_speed, step_s, ...); turn_start is always 0: it turns
+  // only while walking (stepping round on the spot overshot).
+  StepGains walk{};
+  // > 0: it walks onto the line through the stop along the way it will face, aiming this far
+  // (m) ahead of itself along that line, so that it arrives square to where it jumps; 0: straight
+  // to the stop.
+  double line_lead_m = 0;
+  // > 0 (with line_lead_m): it has arrived once less than arrived_m of the line is left to the
+  // stop and it is less than this far to the line's side.
+  double arrived_side_m = 0;
   StandingJump jump;
 };
 
@@ -33,6 +42,12 @@ class WalkAndJump {
   bool jumping() const { return jumping_.has_value(); }
 
  private:
+  // Where the walker heads: the stop, or a point on the line into it (line_lead_m).
+  Eigen::Vector2d walk_target(const Eigen::Vector2d& stop, double facing) const;
+  bool arrived(const Eigen::Vector2d& stop, double facing) const;
+  // Which way it turns on the way there: to the walk's direction, then to `facing`.
+  double walk_turn(const Eigen::Vector2d& stop, const Eigen::Vector2d& target, double facing) const;
+
   JumpApproach approach_;
   double control_dt_;
   std::optional<StepController> legs_;

@@ -61,7 +61,7 @@ client::LongJumpPlan plan_from_env() {
   client::LongJumpPlan plan;
   for (client::LongJumpStage* stage : {&plan.standing, &plan.walk_up}) {
     client::control::JumpApproach& a = stage->approach;
-    if (std::getenv("WALK")) a.walk_speed = std::atof(std::getenv("WALK"));
+    if (std::getenv("WALK")) a.walk.max_speed = std::atof(std::getenv("WALK"));
     if (std::getenv("STOP")) stage->stop_m = std::atof(std::getenv("STOP"));
     if (std::getenv("STILL")) a.still_s = std::atof(std::getenv("STILL"));
     if (std::getenv("SPEED")) a.still_speed = std::atof(std::getenv("SPEED"));
