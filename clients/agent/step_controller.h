@@ -59,9 +59,9 @@ struct StepGains {
 };
 
 // A faster sideways gait, `base` otherwise: 0.2 s steps, 0.6 m side steps, the lead foot
-// placed nearer the body. Measured (sandbox solo, sent 3-3.7 m sideways): 1.0 m/s sideways once
-// under way (0.76 m/s over the first 2.5 s from standing; the plain gait 0.21-0.24), no falls;
-// forward 0.68 m/s, but backward only 0.12 m/s (plain: 0.75 and 0.67). docs/control.md.
+// placed nearer the body. Measured (sandbox solo, sent 3-3.7 m): 1.0 m/s sideways once under
+// way (0.76 m/s over the first 2.5 s from standing; the plain gait 0.21-0.24), no falls; over
+// those 2.5 s forward 0.51 m/s, but backward only 0.08 (plain: 0.61 and 0.47). docs/control.md.
 StepGains side_stepping(StepGains base = {});
 
 // The leg pieces the controller is built from, for other leg motions (a kick's standing leg):
