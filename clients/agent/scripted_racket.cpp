@@ -84,13 +84,7 @@ Play tennis_play() {
   p.follow = 0.2;
   p.max_speed = 8;
   p.horizon_s = 3.0;
-  p.legs = side_stepping(p.legs);
   p.legs.balance = {1.0, 2.0, 0.0, 1.0};
-  // The side-step shuffle, slowed: at its 1.2 m/s the racket-carrying player fell on 12 of 21
-  // balls (tuning seeds 1-20); at 0.8 m/s with the lead foot 0.06 s nearer, 1 of 41 (seeds
-  // 21-60), and a reachable stroke came for 13 of 61 balls on seeds 1-60 (the plain gait: 5).
-  p.legs.max_side_speed = 0.8;
-  p.legs.side_step = -0.06;
   // The arc swing: measured on tuning seeds (1v1 feeds, 1-4), the face at the planned contact
   // moves at a median 3.6 m/s along the swing (the straight swing: 1.5 m/s), 0.55 m from the
   // planned point (0.57 m); the arm lags a swing driven at the planned rate by about a quarter,
