@@ -57,6 +57,16 @@ void write_flat_foot(std::span<const float> o, std::span<float> a, int knee) {
   flat_foot(o, a, knee);
 }
 
+StepGains side_stepping(StepGains g) {
+  g.step_s = 0.2;
+  g.max_speed = 1.3;
+  g.max_forward_speed = 0.6;
+  g.max_side_speed = 1.2;
+  g.max_side_step = 0.6;
+  g.side_step = -0.08;
+  return g;
+}
+
 void StepController::stand(std::span<const float> o, std::span<float> a) const {
   const BalanceGains& g = gains_.balance;
   const Eigen::Vector3d mid = 0.5 * (body_position(o, kLAnkle) + body_position(o, kRAnkle));
@@ -118,14 +128,25 @@ void StepController::act(std::span<const float> o, const Eigen::Vector2d& target
     desired_v = target / distance * std::min(g.max_speed, g.speed_per_m * distance);
   // Sideways the feet cannot cross, so only every other step can catch the body: go slower.
   desired_v.y() = std::clamp(desired_v.y(), -g.max_side_speed, g.max_side_speed);
+  if (g.max_forward_speed > 0)
+    desired_v.x() = std::clamp(desired_v.x(), -g.max_forward_speed, g.max_forward_speed);
   const double remaining = g.step_s - phase_s_;
   Eigen::Vector2d foot = v * (remaining + g.lead_s) + g.velocity_gain * (v - desired_v);
   foot.y() += side * g.stance_width;
+  // Moving sideways, the foot on the side of the motion leads; side_step moves where it lands.
+  const bool leads = side * desired_v.y() > 0;
+  if (leads) foot.y() += g.side_step * desired_v.y();
   const Eigen::Vector2d stance_ankle = body_position(o, stance_hip + 2).head<2>();
   foot.y() = side > 0 ? std::max(foot.y(), stance_ankle.y() + 0.12)
                       : std::min(foot.y(), stance_ankle.y() - 0.12);
   const Eigen::Vector2d reach = foot - stance_ankle;
-  if (reach.norm() > g.max_step) foot = stance_ankle + reach * (g.max_step / reach.norm());
+  if (g.max_side_step > 0) {
+    // An ellipse: max_step forward and back, max_side_step sideways.
+    const double over = std::hypot(reach.x() / g.max_step, reach.y() / g.max_side_step);
+    if (over > 1) foot = stance_ankle + reach / over;
+  } else if (reach.norm() > g.max_step) {
+    foot = stance_ankle + reach * (g.max_step / reach.norm());
+  }
 
   const double s = std::clamp(phase_s_ / g.step_s, 0.0, 1.0);
   const double blend = std::clamp(2 * s, 0.0, 1.0);  // the foot gets there by mid-swing
