@@ -34,7 +34,8 @@ std::vector<LayoutBlock> high_jump_task_layout() {
 std::vector<RefereeCall> high_jump_calls() {
   return {{"cleared", "the bar was cleared: height, attempt", kAnnounced},
           {"failure",
-           "a failed attempt: reason (bar_dislodged, touched_beyond, fell, left_area, time), "
+           "a failed attempt: reason (bar_dislodged, touched_beyond, fell, left_area, time, "
+           "under_the_bar), "
            "height, attempt",
            kAnnounced},
           {"fall", "an athlete fell (body)"}};

@@ -7,7 +7,8 @@
 // a fall before the jump, and leaving the fan-shaped run-up before going over); a clearance is
 // going over and resting on the landing area settle_s with the bar still up. Paper (the seed):
 // ends on a fall, the bar displaced or leaving the run-up area (our rectangle: the seed gives no
-// bounds); a clearance is every body past the plane by 0.1 m with the bar up.
+// bounds); a clearance is every body past the plane by 0.1 m with the bar up, the root having
+// crossed the plane above the bar (passing under it is `under_the_bar`).
 #pragma once
 
 #include <Eigen/Core>
@@ -32,7 +33,8 @@ struct BarStep {
 
 struct BarDecision {
   bool cleared = false;
-  std::string reason;  // a failure's: bar_dislodged, touched_beyond, fell, left_area, time
+  std::string reason;  // a failure's: bar_dislodged, touched_beyond, fell, left_area, time,
+                       // under_the_bar (paper)
 };
 
 class HighJumpReferee {
@@ -43,11 +45,13 @@ class HighJumpReferee {
   // Official: is a root (relative to the bar's centre on the ground) inside the run-up fan, or
   // past the bar's plane (where the landing area's own rule applies)?
   bool in_runup(const Eigen::Vector3d& root) const;
-  bool over() const { return over_; }  // official: the root went over the bar
+  bool over() const { return over_; }  // the root went over the bar
 
  private:
   std::optional<BarDecision> official_step(const BarStep& s);
   std::optional<BarDecision> paper_step(const BarStep& s);
+  // The root crossed the bar's plane this step above the bar (and between the uprights).
+  bool crossed_above(const BarStep& s, bool between_uprights) const;
   std::optional<BarDecision> decide(bool cleared, std::string why);
 
   HighJumpRules rules_;

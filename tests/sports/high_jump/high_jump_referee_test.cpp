@@ -98,10 +98,22 @@ TEST(HighJumpReferee, PaperClearsWhenEveryBodyIsPastThePlane) {
   BarStep s = at(1, {-0.2, 0, 1.3}, {0.5, 0, 1.3});
   s.min_body_x = 0.09;
   EXPECT_FALSE(ref.step(s));
+  s.root_prev = s.root;  // the root crossed above the bar on the step before
   s.min_body_x = 0.11;
   EXPECT_TRUE(ref.step(s)->cleared);
   HighJumpReferee strayed(HighJumpRules{});
   EXPECT_EQ(strayed.step(at(1, {-20, -6, 0.9}, {-20, -8.1, 0.9}))->reason, "left_area");
+}
+
+TEST(HighJumpReferee, PaperWalkingUnderAHighBarIsNoClearance) {
+  HighJumpRules rules;
+  BarStep s = at(1, {-0.2, 0, 0.9}, {0.3, 0, 0.9});
+  s.bar_height = 2.0;  // the seed's highest bar, above a walking root
+  s.min_body_x = 0.11;
+  const auto call = HighJumpReferee(rules).step(s);
+  ASSERT_TRUE(call);
+  EXPECT_FALSE(call->cleared);
+  EXPECT_EQ(call->reason, "under_the_bar");
 }
 
 // Eq. 1 by hand: R = r_p away from the bar, r_p + r_h within 0.5 m of its plane (x = 20).
