@@ -160,9 +160,12 @@ nlohmann::json golf_shots(const std::string& policy, const std::vector<std::uint
 }  // namespace
 
 nlohmann::json run_athletics_bench(const AthleticsBenchOptions& o) {
-  const auto seeds = episode_seeds(o.seeds, o.episodes);
-  nlohmann::json report = {
-      {"seeds", o.seeds.empty() ? "1-" + std::to_string(o.episodes) : o.seeds}};
+  const std::string named = !o.seeds.empty()
+                                ? o.seeds
+                                : std::to_string(kFirstUnseenAthleticsSeed) + "-" +
+                                      std::to_string(kFirstUnseenAthleticsSeed + o.episodes - 1);
+  const auto seeds = episode_seeds(named, 0);
+  nlohmann::json report = {{"seeds", named}};
   auto wanted = [&o](const std::string& event) {
     return std::find(o.events.begin(), o.events.end(), event) != o.events.end();
   };

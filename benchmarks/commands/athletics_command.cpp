@@ -13,10 +13,14 @@ BenchCommand athletics_command(CLI::App& app) {
       "mark, hurdles completion, time and knocks, golf hit and holed rates, ticks/s");
   auto o = std::make_shared<AthleticsBenchOptions>();
   auto& cli = c.cli();
-  cli.add_option("--episodes", o->episodes, "episodes per policy, event and height (seeds 1..N)")
+  cli.add_option("--episodes", o->episodes,
+                 "episodes per policy, event and height (seeds 5001.., the evaluation seeds of "
+                 "docs/figures.md)")
       ->check(CLI::PositiveNumber);
   add_seeds_option(cli, o->seeds, "athletics");
-  cli.add_option("--policies", o->policies, "policies (comma-separated)")->delimiter(',');
+  cli.add_option("--policies", o->policies,
+                 "policies (comma-separated; default zero,random,scripted)")
+      ->delimiter(',');
   cli.add_option(
          "--events", o->events,
          "events (comma-separated): long_jump, standing_long_jump (0.8 m run-up), high_jump, "
