@@ -78,7 +78,9 @@ std::vector<LayoutBlock> boxing_task_layout() {
 }
 
 std::vector<RefereeCall> boxing_calls() {
-  return {{"punch", "a scoring punch (slot, target_slot, body, glove, force_n)"},
+  return {{"punch",
+           "a scoring punch: a blow landed (slot, target_slot, body, glove, force_n, speed_mps: "
+           "the glove's closing speed on arrival)"},
           {"knockdown", "a boxer is down during a round: the count starts (slot)", kAnnounced},
           {"up", "the boxer beat the count (slot)", kAnnounced},
           {"knockout", "not up before the count's end: the bout is over (slot)", kAnnounced},
@@ -104,12 +106,11 @@ BoxingMatch::BoxingMatch(const BoxingConfig& config, const ModeSpec& mode, Layou
   add_player(spec, start[1 - created_first_]);
   if (created_first_ == 1) scene().swap_humanoids(0, 1);
   config_.ring.build(scene().world());
-  std::vector<bool> is_target(spec.bodies.size(), false);
-  for (int b : targets_) is_target[b] = scores_punch_on(spec.bodies[b].name);
-  touches_.emplace(
-      std::vector<int>{player(0).entity(), player(1).entity()}, teams(),
-      [is_target](int body, int) { return is_target[body]; }, config_.punch_force_n,
-      config_.punch_refractory_s);
+  scoring_body_.assign(spec.bodies.size(), false);
+  for (int b : targets_) scoring_body_[b] = scores_punch_on(spec.bodies[b].name);
+  blows_.emplace(std::array<int, 2>{player(0).entity(), player(1).entity()}, hands_, glove_centre_,
+                 scoring_body_);
+  last_scored_ = {{{-1e9, -1e9}, {-1e9, -1e9}}};
 }
 
 core::RootPlacement BoxingMatch::corner(int b) {
@@ -120,21 +121,33 @@ Eigen::Vector3d BoxingMatch::glove_position(int slot, int hand) const {
   return combat::point_on_body(player(slot).body_state(hands_[hand]), glove_centre_[hand]).position;
 }
 
+void BoxingMatch::before_physics_step() {
+  blows_->before_step({player(0).body_states(), player(1).body_states()});
+}
+
+bool BoxingMatch::scores(const GloveArrival& a) const {
+  if (!is_blow(a, config_.blows) || a.force < config_.punch_force_n) return false;
+  if (time() - last_scored_[a.attacker][a.hand] < config_.punch_refractory_s) return false;
+  if (!referee_.in_round() || referee_.counting(0) || referee_.counting(1)) return false;
+  if (down(a.attacker) || down(1 - a.attacker)) return false;
+  return from_front_or_side(a.normal, player(1 - a.attacker).body_state(0).orientation);
+}
+
 void BoxingMatch::after_physics_step(double) {
-  for (const Touch& t : touches_->collect(scene().world(), time())) {
-    // A glove: the striking geom is on a hand body.
-    if (t.striker_body != hands_[0] && t.striker_body != hands_[1]) continue;
-    if (!referee_.in_round() || referee_.counting(0) || referee_.counting(1)) continue;
-    if (down(t.attacker) || down(t.defender)) continue;
-    if (!from_front_or_side(t.normal, player(t.defender).body_state(0).orientation)) continue;
-    nlohmann::json punch = referee_event("punch", time(), t.attacker);
-    punch["target_slot"] = t.defender;
-    punch["body"] = player(t.defender).spec().bodies[t.target_body].name;
-    punch["glove"] = t.striker_body == hands_[0] ? "left" : "right";
-    punch["force_n"] = tenths(t.force);
+  for (const GloveArrival& a : blows_->collect(scene().world(), time())) {
+    arrivals_.push_back(a);
+    if (!scores(a)) continue;
+    last_scored_[a.attacker][a.hand] = time();
+    const int defender = 1 - a.attacker;
+    nlohmann::json punch = referee_event("punch", time(), a.attacker);
+    punch["target_slot"] = defender;
+    punch["body"] = player(defender).spec().bodies[a.target_body].name;
+    punch["glove"] = a.hand == 0 ? "left" : "right";
+    punch["force_n"] = tenths(a.force);
+    punch["speed_mps"] = tenths(a.closing_speed);
     log(std::move(punch));
-    referee_.punch(teams()[t.attacker], time());
-    scored_this_tick_[teams()[t.attacker]] = true;
+    referee_.punch(teams()[a.attacker], time());
+    scored_this_tick_[teams()[a.attacker]] = true;
   }
 }
 
@@ -177,7 +190,7 @@ void BoxingMatch::log_calls() {
 
 void BoxingMatch::back_to_corners() {
   for (int b = 0; b < 2; ++b) reset_player(b, corner(b));
-  touches_->reset();
+  blows_->reset();
 }
 
 nlohmann::json BoxingMatch::score_json() const {

@@ -1,6 +1,7 @@
 // A boxing bout (1v1): two SMPL boxers with gloves in a roped ring. Scoring punches are found at
-// the physics rate from the gloves' contacts (TouchSensor) and filtered (a target body, front or
-// side, nobody down); the BoxingReferee runs rounds, counts and cards. Rewards: the seed's
+// the physics rate from the gloves' contacts: blows (BlowSensor: a glove arriving fast, knuckles
+// first; never a glove resting or pushing), filtered (a target body, front or side, hard enough,
+// nobody down); the BoxingReferee runs rounds, counts and cards. Rewards: the seed's
 // eq. 9-10 with the nearer glove as the striker (combat_rewards.h).
 #pragma once
 
@@ -8,10 +9,10 @@
 #include <optional>
 #include <random>
 
+#include "boxing/blows.h"
 #include "boxing/boxing_referee.h"
 #include "boxing/ring.h"
 #include "framework/smpl_match.h"
-#include "framework/touch_sensor.h"
 
 namespace olympics::sports::boxing {
 
@@ -19,7 +20,8 @@ struct BoxingConfig {
   BoxingRules rules;
   Ring ring;
   bool both_gloves = true;          // false: the seed's right glove only
-  double punch_force_n = 100;       // a glove's contact force that scores
+  double punch_force_n = 100;       // a blow's contact force, in its first step, that scores
+  BlowRules blows;                  // what makes a glove's arrival a blow
   double punch_refractory_s = 0.3;  // one glove scores at most this often
 };
 
@@ -49,13 +51,17 @@ class BoxingMatch : public SmplMatch {
   const BoxingReferee& referee() const { return referee_; }
   // The slot whose boxer was created first in the physics world (drawn per bout).
   int created_first() const { return created_first_; }
+  // Every arrival of a glove on the opponent so far, blows or not, scoring or not.
+  const std::vector<GloveArrival>& arrivals() const { return arrivals_; }
   // Where a boxer's glove is (or its bare hand, when not gloved), in the world.
   Eigen::Vector3d glove_position(int slot, int hand) const;  // hand 0 left, 1 right
 
  private:
   void write_task_observation(int slot, const HeadingFrame& frame,
                               ObservationWriter& out) const override;
+  void before_physics_step() override;
   void after_physics_step(double step_start) override;
+  bool scores(const GloveArrival& a) const;
   void settle_tick() override;
   void on_time_limit() override;
   void describe_scene(SceneBuilder& scene) const override { config_.ring.describe(scene); }
@@ -71,7 +77,10 @@ class BoxingMatch : public SmplMatch {
   std::vector<int> targets_;
   BoxingReferee referee_;
   int created_first_ = 0;
-  std::optional<TouchSensor> touches_;
+  std::vector<bool> scoring_body_;  // by body index: a punch there scores
+  std::optional<BlowSensor> blows_;
+  std::array<std::array<double, 2>, 2> last_scored_;  // [slot][hand], s
+  std::vector<GloveArrival> arrivals_;
   std::array<bool, 2> scored_this_tick_{};
   nlohmann::json rounds_ = nlohmann::json::array();  // every round's card, for the result
 };

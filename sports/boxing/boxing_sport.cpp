@@ -1,5 +1,7 @@
 #include "boxing/boxing_sport.h"
 
+#include <cmath>
+
 #include "combat/combat_rewards.h"
 
 namespace olympics::sports::boxing {
@@ -15,8 +17,18 @@ std::vector<SettingSpec> BoxingSport::settings() const {
           .with_official(6.10),  // AIBA Technical Rules: 6.10 m inside the ropes
       SettingSpec::choice("gloves", "both", "both hands gloved, or the seed's \"right\" only",
                           {"both", "right"}),
-      SettingSpec::number("punch_force_n", 100.0, "N: a glove's contact force that scores", 1,
+      SettingSpec::number("punch_force_n", 100.0,
+                          "N: a blow's contact force, in its first physics step, that scores", 1,
                           5000),
+      SettingSpec::number("punch_speed", 1.0,
+                          "m/s: a glove scores only arriving this fast (towards the body it "
+                          "meets, along the contact normal); a glove resting or pushing never "
+                          "scores",
+                          0, 20),
+      SettingSpec::number("knuckle_cone_deg", 60.0,
+                          "degrees: a glove scores only landing within this of its knuckle "
+                          "face's centre (the face away from the wrist)",
+                          0, 180),
       SettingSpec::number("punch_refractory_s", 0.3, "s: one glove scores at most this often", 0.05,
                           2),
       SettingSpec::number("rounds", 3, "rounds in the bout", 1, 12),
@@ -39,6 +51,8 @@ BoxingConfig BoxingSport::config(const nlohmann::json& options) const {
   c.both_gloves = s.at("gloves") == "both";
   c.punch_force_n = s.at("punch_force_n");
   c.punch_refractory_s = s.at("punch_refractory_s");
+  c.blows.min_closing_speed = s.at("punch_speed");
+  c.blows.knuckle_cone_cos = std::cos(s.at("knuckle_cone_deg").get<double>() * M_PI / 180);
   c.rules.rounds = s.at("rounds");
   c.rules.round_s = s.at("round_s");
   c.rules.rest_s = s.at("rest_s");

@@ -3,11 +3,14 @@
 // fencers go back to their lines; knock-downs, knock-outs and rounds happen as the referee says.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "arm_control.h"
 #include "boxing/boxing_match.h"
+#include "boxing/gloves.h"
 #include "core/control_rate.h"
 #include "core/humanoid_scene.h"
 #include "core/self_observation.h"
@@ -175,30 +178,127 @@ TEST(BoxingBout, RoundsEndWithCardsAndStartInTheCorners) {
               o.scores[1]);
 }
 
-// Boxer 1 (facing -x) thrown at 3 m/s onto boxer 0's still right glove (the arms of the rest
-// pose are out to the sides), the given body of boxer 1 level with the glove and 0.2 m in front
-// of it; the punches scored in the next ticks, by body.
-std::vector<std::string> punched_by_throwing_onto_the_glove(const std::string& body) {
+// Both boxers weightless; boxer 0 held by its pelvis 0.3 m up in the air points its right arm
+// straight ahead for a second, and its glove is then held still where it is. Boxer 1 (facing
+// boxer 0, arms out to the sides) is put with the centre of its `body`'s geom 0.25 m out from
+// that glove along the glove's knuckle axis (wrist -> glove centre), and moved along that axis
+// onto the glove: at each tick's start, all its bodies at `speeds[tick]` m/s (NaN: left to move
+// as they do). A speed set tick after tick is a push; a high one set once is a blow.
+struct OntoTheGlove {
+  std::vector<nlohmann::json> punches;
+  std::vector<double> force_n;  // per tick: the glove's strongest contact on boxer 1, last step
+};
+OntoTheGlove onto_the_right_glove(const std::string& body, const std::vector<double>& speeds) {
   auto m = sport_or_throw("boxing").create({"1v1", 1, 0.0, {}});
   auto& bout = dynamic_cast<boxing::BoxingMatch&>(*m);
-  const core::Humanoid& defender = std::as_const(bout).scene().humanoid(1);
-  const Eigen::Vector3d glove = bout.glove_position(0, 1);
-  const Eigen::Vector3d target = defender.body_state(defender.spec().body_index(body)).position;
-  const Eigen::Vector3d shift = glove + Eigen::Vector3d(0.2, 0, 0) - target;
-  for (int b = 0; b < defender.body_count(); ++b) {
-    dBodyID id = defender.ode_body(b);
-    const dReal* p = dBodyGetPosition(id);
-    dBodySetPosition(id, p[0] + shift.x(), p[1] + shift.y(), p[2] + shift.z());
-    dBodySetLinearVel(id, -3, 0, 0);
-  }
-  std::vector<std::string> punched;
-  const std::vector<float> zero(m->action_size(), 0.0f);
-  for (int tick = 0; tick < 4; ++tick) {
-    m->step({zero, zero});
+  const core::HumanoidScene& scene = std::as_const(bout).scene();
+  const core::Humanoid &attacker = scene.humanoid(0), &defender = scene.humanoid(1);
+  auto move_weightless = [](const core::Humanoid& h, const Eigen::Vector3d& shift) {
+    for (int b = 0; b < h.body_count(); ++b) {
+      dBodyID id = h.ode_body(b);
+      const dReal* p = dBodyGetPosition(id);
+      dBodySetPosition(id, p[0] + shift.x(), p[1] + shift.y(), p[2] + shift.z());
+      dBodySetGravityMode(id, 0);
+    }
+  };
+  auto hold = [&](int body) {
+    dJointID joint = dJointCreateFixed(scene.world().world(), nullptr);
+    dJointAttach(joint, attacker.ode_body(body), nullptr);
+    dJointSetFixed(joint);
+  };
+  move_weightless(attacker, {0, 0, 0.3});
+  move_weightless(defender, {0, 0, 0});
+  hold(0);
+  std::vector<float> self(m->obs_size()), arm(m->action_size()), zero(m->action_size(), 0.0f);
+  auto tick = [&] {
+    m->observe(0, self);  // it begins with the self observation point_arm reads
+    std::fill(arm.begin(), arm.end(), 0.0f);
+    client::point_arm(self, arm, client::Arm::Right, {1, 0, 0}, M_PI / 2);
+    m->step({arm, zero});
+  };
+  for (int t = 0; t < 30; ++t) tick();
+  const int hand = attacker.spec().body_index("R_Hand");
+  hold(hand);
+  const core::BodyState wrist = attacker.body_state(hand);
+  const Eigen::Vector3d knuckles =
+      (wrist.orientation * boxing::glove_centre(attacker.spec(), hand)).normalized();
+  const int target = defender.spec().body_index(body);
+  const core::BodyState t = defender.body_state(target);
+  const Eigen::Vector3d centre =
+      t.position + t.orientation * defender.spec().bodies[target].geoms.front().pos;
+  move_weightless(defender, bout.glove_position(0, 1) + 0.25 * knuckles - centre);
+  OntoTheGlove out;
+  for (double v : speeds) {
+    if (!std::isnan(v))
+      for (int b = 0; b < defender.body_count(); ++b) {
+        const Eigen::Vector3d vel = -v * knuckles;
+        dBodySetLinearVel(defender.ode_body(b), vel.x(), vel.y(), vel.z());
+        dBodySetAngularVel(defender.ode_body(b), 0, 0, 0);
+      }
+    tick();
     for (const auto& e : m->outcome().info["events"])
-      if (e["call"] == "punch") punched.push_back(e["body"]);
+      if (e.value("call", std::string()) == "punch") out.punches.push_back(e);
+    double force = 0;
+    for (const auto& c : scene.world().sensed_contacts())
+      if (c.other && c.sensor->entity == attacker.entity() && c.sensor->body == hand &&
+          c.other->entity == defender.entity())
+        force = std::max(force, c.normal_force);
+    out.force_n.push_back(force);
   }
-  return punched;
+  return out;
+}
+
+std::vector<std::string> punched_bodies(const OntoTheGlove& o) {
+  std::vector<std::string> bodies;
+  for (const auto& p : o.punches) bodies.push_back(p["body"]);
+  return bodies;
+}
+
+double most(const std::vector<double>& xs, size_t from = 0) {
+  return *std::max_element(xs.begin() + from, xs.end());
+}
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// A blow: boxer 1 thrown at 3 m/s onto the glove, then left to move.
+std::vector<std::string> punched_by_throwing_onto_the_glove(const std::string& body) {
+  std::vector<double> speeds(6, kNaN);
+  speeds[0] = speeds[1] = 3.0;
+  return punched_bodies(onto_the_right_glove(body, speeds));
+}
+
+TEST(BoxingRules, AGlovePushedSlowlyIntoTheHeadDoesNotScore) {
+  // The head leans into a still glove at 0.5 m/s for a second, pressing it above the 100 N a
+  // blow needs: a push, not a blow. (Before blows were told from pushes it scored.)
+  const auto pushed = onto_the_right_glove("Head", std::vector<double>(30, 0.5));
+  EXPECT_GT(most(pushed.force_n), 100.0) << "the set-up presses hard";
+  EXPECT_TRUE(pushed.punches.empty()) << pushed.punches.front().dump();
+}
+
+TEST(BoxingRules, AGloveArrivingAtPunchSpeedScoresOnce) {
+  // The head meets the glove at 4 m/s and stays pressed on it for a second: one punch.
+  std::vector<double> speeds(30, kNaN);
+  speeds[0] = speeds[1] = 4.0;
+  const auto blow = onto_the_right_glove("Head", speeds);
+  ASSERT_EQ(blow.punches.size(), 1u);
+  EXPECT_EQ(blow.punches[0]["body"], "Head");
+  EXPECT_GE(blow.punches[0]["speed_mps"].get<double>(), 3.0) << blow.punches[0].dump();
+}
+
+TEST(BoxingRules, APressThatEasesAndPressesAgainDoesNotScoreTwice) {
+  // A blow at 4 m/s (one punch), stopped there; then the head eases off at 0.05 m/s for 0.8 s,
+  // its press on the glove falling below 100 N for longer than a glove's refractory time, and
+  // presses on the glove again at 0.5 m/s, above 100 N: still one punch. (Before, the second
+  // press scored again.)
+  std::vector<double> speeds = {4.0, 4.0, 0.0};
+  speeds.insert(speeds.end(), 24, -0.05);
+  const size_t again = speeds.size();
+  speeds.insert(speeds.end(), 30, 0.5);
+  const auto pressed = onto_the_right_glove("Head", speeds);
+  EXPECT_LT(*std::min_element(pressed.force_n.begin() + 3, pressed.force_n.begin() + again), 100.0)
+      << "it eases";
+  EXPECT_GT(most(pressed.force_n, again), 100.0) << "the second press is hard";
+  EXPECT_EQ(pressed.punches.size(), 1u);
 }
 
 TEST(BoxingRules, APunchBelowTheBeltDoesNotScore) {
