@@ -24,12 +24,17 @@ enum class Ranking { LongestMark, FastestTime, FewestStrokes };
 
 struct RankedSport {
   std::string sport;
-  std::string options;  // seconds-short: one attempt of a few seconds
+  std::string options;  // short: one attempt each (the race: up to ~110 s of match time)
   std::string entrants;
-  int seed;
-  Ranking ranking;
-  bool distinct;  // the heat's places must not be all equal (entrants that score)
+  int seed;         // the league's --seed (the heat's match seed and seats follow from it)
+  Ranking ranking;  // the high jump's LongestMark (best height) holds only with no countback
+  bool distinct;    // the heat's places must not be all equal (entrants that score)
 };
+
+// gtest names a failing instance by this, not by the struct's bytes.
+void PrintTo(const RankedSport& s, std::ostream* os) {
+  *os << s.sport << " " << s.options << ", entrants " << s.entrants << ", seed " << s.seed;
+}
 
 // Whether athlete a's score beats b's under the sport's ranking.
 bool beats(Ranking ranking, double a, double b) {
