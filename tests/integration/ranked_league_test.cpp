@@ -27,7 +27,7 @@ struct RankedSport {
   std::string options;  // short: one attempt each (the race: up to ~110 s of match time)
   std::string entrants;
   int seed;         // the league's --seed (the heat's match seed and seats follow from it)
-  Ranking ranking;  // the high jump's LongestMark (best height) holds only with no countback
+  Ranking ranking;  // the high jump's LongestMark (best height) holds for one height, one try
   bool distinct;    // the heat's places must not be all equal (entrants that score)
 };
 
@@ -244,13 +244,13 @@ TEST(RankedLeagueResume, KilledAfterAHeatItResumesToTheSameTable) {
 
 // Issue 31's 8-athlete hurdles race among them. The scripted baselines are the entrants where
 // they make marks, so the heats end in distinct places: four scripted athletes and four zero
-// ones (which fall or drop the implement: no mark, last) in the long jump (standing, 0.8 m
-// behind the line: the scripted jumper's stop), the javelin (a standing throw 2 m behind the
-// arc) and golf (1 m putts: the scripted ones drop, the idle ones are picked up at the maximum);
-// eight scripted hurdles walkers on seed 3, the league's first seed whose heat has a finisher
-// (the race is deterministic per seed; seeds 1, 2 and 4 end with all eight out of their lanes).
-// The high jump keeps zero and random athletes, which all fail: a draw among all (the scripted
-// high jumper walks 20 m to the bar, too slow for this test).
+// ones (which fall or drop the implement: no mark, last) in the high jump (one try at 0.5 m
+// from the event's start: the scripted jumpers walk to the bar, some clear; with one height and
+// one try no countback breaks a tie), the long jump (standing, 0.8 m behind the line: the
+// scripted jumper's stop), the javelin (a standing throw 2 m behind the arc) and golf (1 m
+// putts: the scripted ones drop, the idle ones are picked up at the maximum); eight scripted
+// hurdles walkers on seed 3, the league's first seed whose heat has a finisher (the race is
+// deterministic per seed; seeds 1, 2 and 4 end with all eight out of their lanes).
 const std::string kScriptedAndZero =
     "scripted:1,zero,scripted:2,zero,scripted:3,zero,scripted:4,zero";
 INSTANTIATE_TEST_SUITE_P(
@@ -259,9 +259,8 @@ INSTANTIATE_TEST_SUITE_P(
         RankedSport{"long_jump", R"({"rules": "official", "attempts": 1, "run_up": 0.8})",
                     kScriptedAndZero, 5, Ranking::LongestMark, true},
         RankedSport{"high_jump",
-                    R"({"rules": "official", "heights": 1, "tries": 1, "attempt_s": 2})",
-                    "zero,random:1,zero,random:2,zero,random:3,zero,random:4", 5,
-                    Ranking::LongestMark, false},
+                    R"({"rules": "official", "heights": 1, "tries": 1, "bar_height": 0.5})",
+                    kScriptedAndZero, 5, Ranking::LongestMark, true},
         RankedSport{"hurdles", R"({"rules": "official"})",
                     "scripted:1,scripted:2,scripted:3,scripted:4,scripted:5,scripted:6,"
                     "scripted:7,scripted:8",
