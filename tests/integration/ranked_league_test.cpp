@@ -18,10 +18,36 @@
 namespace olympics::testing {
 namespace {
 
+// How the server's scores (the stored record's) rank the athletes: the best marks (0 = none
+// valid), the race times (0 = did not finish) or the strokes to hole out.
+enum class Ranking { LongestMark, FastestTime, FewestStrokes };
+
 struct RankedSport {
   std::string sport;
-  std::string options;  // seconds-short: one attempt of a few seconds
+  std::string options;  // short: one attempt each (the race: up to ~110 s of match time)
+  std::string entrants;
+  int seed;         // the league's --seed (the heat's match seed and seats follow from it)
+  Ranking ranking;  // the high jump's LongestMark (best height) holds for one height, one try
+  bool distinct;    // the heat's places must not be all equal (entrants that score)
 };
+
+// gtest names a failing instance by this, not by the struct's bytes.
+void PrintTo(const RankedSport& s, std::ostream* os) {
+  *os << s.sport << " " << s.options << ", entrants " << s.entrants << ", seed " << s.seed;
+}
+
+// Whether athlete a's score beats b's under the sport's ranking.
+bool beats(Ranking ranking, double a, double b) {
+  switch (ranking) {
+    case Ranking::LongestMark:
+      return a > b;
+    case Ranking::FastestTime:
+      return a > 0 && (b == 0 || a < b);
+    case Ranking::FewestStrokes:
+      return a < b;
+  }
+  return false;
+}
 
 class RankedLeague : public ::testing::TestWithParam<RankedSport> {};
 
@@ -44,9 +70,9 @@ TEST_P(RankedLeague, AnEightAthleteCompetitionIsStoredWithEightRankedPlacesAndRa
                "--format",
                "round-robin",
                "--entrants",
-               "zero,random:1,zero,random:2,zero,random:3,zero,random:4",
+               param.entrants,
                "--seed",
-               "5",
+               std::to_string(param.seed),
                "--lcm-url",
                server.url(),
                "--log-dir",
@@ -81,6 +107,19 @@ TEST_P(RankedLeague, AnEightAthleteCompetitionIsStoredWithEightRankedPlacesAndRa
     EXPECT_GE(p, 1);
     EXPECT_LE(p, 8);
   }
+  // The places agree with the marks, times or strokes the server stored: each athlete's place
+  // is one more than the number who beat it (equal scores share a place).
+  ASSERT_EQ(record->scores.size(), 8u);
+  for (size_t a = 0; a < 8; ++a) {
+    int beaten_by = 0;
+    for (size_t b = 0; b < 8; ++b)
+      beaten_by += beats(param.ranking, record->scores[b], record->scores[a]);
+    EXPECT_EQ(g.places[a], 1 + beaten_by) << "slot " << a << ": " << record->info;
+  }
+  if (param.distinct) {
+    EXPECT_GT(std::set<int>(g.places.begin(), g.places.end()).size(), 1u)
+        << "an all-way tie: " << record->info;
+  }
 
   // Rated by the league: one eight-team update over the stored places.
   std::vector<std::vector<selfplay::SkillRating>> field(8, {selfplay::SkillRating{}});
@@ -95,6 +134,21 @@ TEST_P(RankedLeague, AnEightAthleteCompetitionIsStoredWithEightRankedPlacesAndRa
     EXPECT_LT(row.skill.sigma, 25.0 / 3.0) << row.name << " was not rated";
     EXPECT_EQ(row.standing.played, 7) << "a heat of eight: seven pairwise results each";
   }
+  // The ratings after the heat order the entrants as their places do: from equal priors, an
+  // athlete placed ahead (a finisher ahead of a non-finisher, a longer mark) rates higher, and
+  // equal places rate equal.
+  std::vector<double> mu_of_slot(8);
+  for (const auto& row : board.rows)
+    mu_of_slot[std::find(g.seats.begin(), g.seats.end(), row.standing.entrant) - g.seats.begin()] =
+        row.skill.mu;
+  for (size_t a = 0; a < 8; ++a)
+    for (size_t b = 0; b < 8; ++b) {
+      if (g.places[a] < g.places[b]) {
+        EXPECT_GT(mu_of_slot[a], mu_of_slot[b]) << "slots " << a << ", " << b;
+      } else if (g.places[a] == g.places[b]) {
+        EXPECT_DOUBLE_EQ(mu_of_slot[a], mu_of_slot[b]) << "slots " << a << ", " << b;
+      }
+    }
   // The table the user sees is that one.
   Process table({program("olympics-league"), "table", "--db", db, "--name", "final", "--json"},
                 dir + "/table.log");
@@ -188,15 +242,34 @@ TEST(RankedLeagueResume, KilledAfterAHeatItResumesToTheSameTable) {
   }
 }
 
-// Issue 31's 8-athlete hurdles race among them: zero and random athletes go down, and a short
-// get_up_s makes them "did not finish" within seconds.
+// Issue 31's 8-athlete hurdles race among them. The scripted baselines are the entrants where
+// they make marks, so the heats end in distinct places: four scripted athletes and four zero
+// ones (which fall or drop the implement: no mark, last) in the high jump (one try at 0.5 m
+// from the event's start: the scripted jumpers walk to the bar, some clear; with one height and
+// one try no countback breaks a tie), the long jump (standing, 0.8 m behind the line: the
+// scripted jumper's stop), the javelin (a standing throw 2 m behind the arc) and golf (1 m
+// putts: the scripted ones drop, the idle ones are picked up at the maximum); eight scripted
+// hurdles walkers on seed 32, the league's first seed whose heat has two finishers (the race is
+// deterministic per seed; of seeds 1-32, 26 end with all eight out of their lanes, 5 with one
+// finisher): places [2,3,1,3,3,3,3,3], times 109.688 and 109.573 s, six out of their lanes.
+const std::string kScriptedAndZero =
+    "scripted:1,zero,scripted:2,zero,scripted:3,zero,scripted:4,zero";
 INSTANTIATE_TEST_SUITE_P(
     Athletics, RankedLeague,
     ::testing::Values(
-        RankedSport{"long_jump", R"({"rules": "official", "attempts": 1, "attempt_s": 2})"},
+        RankedSport{"long_jump", R"({"rules": "official", "attempts": 1, "run_up": 0.8})",
+                    kScriptedAndZero, 5, Ranking::LongestMark, true},
         RankedSport{"high_jump",
-                    R"({"rules": "official", "heights": 1, "tries": 1, "attempt_s": 2})"},
-        RankedSport{"hurdles", R"({"rules": "official", "get_up_s": 1})"}),
+                    R"({"rules": "official", "heights": 1, "tries": 1, "bar_height": 0.5})",
+                    kScriptedAndZero, 5, Ranking::LongestMark, true},
+        RankedSport{"hurdles", R"({"rules": "official"})",
+                    "scripted:1,scripted:2,scripted:3,scripted:4,scripted:5,scripted:6,"
+                    "scripted:7,scripted:8",
+                    32, Ranking::FastestTime, true},
+        RankedSport{"javelin", R"({"rules": "official", "attempts": 1, "run_up": 2})",
+                    kScriptedAndZero, 5, Ranking::LongestMark, true},
+        RankedSport{"golf", R"({"rules": "official", "distance": 1.0, "hole_s": 12})",
+                    kScriptedAndZero, 5, Ranking::FewestStrokes, true}),
     [](const auto& info) { return info.param.sport; });
 
 }  // namespace
