@@ -32,7 +32,8 @@ std::vector<LayoutBlock> high_jump_task_layout() {
 }
 
 std::vector<RefereeCall> high_jump_calls() {
-  return {{"cleared", "the bar was cleared: height, attempt", kAnnounced},
+  return {{"cleared", "the bar was cleared: height, attempt (jump_off: true in a jump-off)",
+           kAnnounced},
           {"failure",
            "a failed attempt: reason (bar_dislodged, touched_beyond, fell, left_area, time, "
            "under_the_bar), "
