@@ -42,7 +42,7 @@ std::vector<SettingSpec> HighJumpSport::settings() const {
                           "m, the first height (the seed trains at 0.5, 1.0, 1.5 and 2.0)", 0.3,
                           2.5),
       SettingSpec::number("bar_raise", 0.0,
-                          "m the bar goes up after a clearance (0: one height, the seed's "
+                          "m the bar goes up per round (0: one height, the seed's "
                           "episode; TR 26.7: at least 0.02)",
                           0, 0.5)
           .with_official(0.05),
