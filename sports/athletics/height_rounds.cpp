@@ -10,6 +10,7 @@ HeightRounds::HeightRounds(int athletes, const std::vector<double>& heights, int
     : series_(athletes, HeightSeries(heights, tries_per_height)),
       due_(athletes, true),
       common_height_(heights.front()),
+      lowest_(heights.front()),
       jump_off_step_(jump_off_step),
       contending_(athletes, false),
       cleared_now_(athletes, false),
@@ -63,7 +64,9 @@ void HeightRounds::end_jump_off_round() {
   int cleared = 0;
   for (size_t i = 0; i < series_.size(); ++i) cleared += contending_[i] && cleared_now_[i];
   if (cleared == 0) {
-    jump_off_height_ -= jump_off_step_;  // all failed: everyone again, the bar lowered
+    // all failed: everyone again, the bar lowered, never below the competition's first height
+    // (athletes who fail every try would otherwise take it under the supports' reach)
+    jump_off_height_ = std::max(lowest_, jump_off_height_ - jump_off_step_);
   } else {
     for (size_t i = 0; i < series_.size(); ++i)
       if (contending_[i] && !cleared_now_[i]) {

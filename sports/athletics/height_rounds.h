@@ -4,8 +4,9 @@
 // so the start order is kept); three failures in a row eliminate. The bar goes up to the next
 // height only when every athlete still in has cleared it or is out. Ties for first place after
 // the countback (TR 26.8) go to a jump-off (TR 26.9): one try each at the next height, the bar
-// raised by the step while more than one clears and lowered by it when all fail, until one alone
-// clears. Passing a height is not modelled: every athlete jumps at every height.
+// raised by the step while more than one clears and lowered by it when all fail (not below the
+// first height), until one alone clears. Passing a height is not modelled: every athlete jumps at
+// every height.
 #pragma once
 
 #include <vector>
@@ -41,6 +42,7 @@ class HeightRounds {
   std::vector<HeightSeries> series_;
   std::vector<bool> due_;
   double common_height_;
+  double lowest_;  // the jump-off's bar comes no lower than the first height
   double jump_off_step_;
   bool over_ = false;
   // The jump-off: who is still in it, its cleared tries this round, and when each one left it.

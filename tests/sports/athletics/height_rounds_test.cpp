@@ -84,6 +84,16 @@ TEST(HeightRounds, AJumpOffLowersTheBarWhenAllFailAndRaisesItWhileSeveralClear) 
   EXPECT_DOUBLE_EQ(r.series(1).best(), 1.0) << "the jump-off decides places, not best heights";
 }
 
+TEST(HeightRounds, AJumpOffBarComesNoLowerThanTheFirstHeight) {
+  HeightRounds r(2, {1.0}, 1, 0.05);
+  r.record(0, true), r.record(1, true);
+  ASSERT_TRUE(r.in_jump_off());
+  for (int round = 0; round < 5; ++round) r.record(0, false), r.record(1, false);
+  EXPECT_DOUBLE_EQ(r.bar_height(), 1.0);
+  EXPECT_FALSE(r.over());
+  EXPECT_EQ(r.places(), (std::vector<int>{1, 1})) << "undecided: first place shared so far";
+}
+
 TEST(HeightRounds, ThoseBehindTheTieKeepTheirCountbackPlaces) {
   HeightRounds r(3, {1.0, 1.1}, 1, 0.05);
   r.record(0, true), r.record(1, false), r.record(2, true);
