@@ -40,20 +40,25 @@ HeightSeries::HeightSeries(std::vector<double> heights, int tries_per_height)
 }
 
 void HeightSeries::record(bool cleared) {
-  if (done_) return;
+  if (!jumping()) return;
   ++attempts_;
   if (cleared) {
     best_ = bar_height();
     failures_at_best_ = failures_here_;
-    failures_here_ = 0;
-    if (++height_index_ == heights_.size()) {
-      height_index_ = heights_.size() - 1;
-      done_ = true;
-    }
+    cleared_here_ = true;
+    if (height_index_ + 1 == heights_.size()) done_ = true;
     return;
   }
   ++total_failures_;
   if (++failures_here_ >= tries_per_height_) done_ = true;
+}
+
+void HeightSeries::raise() {
+  if (!waiting())
+    throw std::logic_error("HeightSeries::raise: the athlete has not cleared the bar's height");
+  ++height_index_;
+  failures_here_ = 0;
+  cleared_here_ = false;
 }
 
 bool ranks_before(const HeightSeries& a, const HeightSeries& b) {

@@ -40,15 +40,23 @@ class HorizontalSeries {
 // Whether `a` ranks before `b` (TR 25.22: best mark, then the next best, ...).
 bool ranks_before(const HorizontalSeries& a, const HorizontalSeries& b);
 
+// One athlete's series in a vertical event. The bar goes up per round (TR 26.1): a clearance
+// leaves the athlete waiting at its height until every athlete still in has cleared it or is out;
+// the competition (HeightRounds) then calls raise().
 class HeightSeries {
  public:
   // `heights` rising; `tries_per_height` failures in a row end the series (TR 26.4: three).
   HeightSeries(std::vector<double> heights, int tries_per_height);
   double bar_height() const { return heights_.at(height_index_); }
   int tries_left_at_height() const { return tries_per_height_ - failures_here_; }
-  // An attempt at bar_height(): cleared moves the bar up (or ends the series after the last
+  // An attempt at bar_height(): a clearance waits for raise() (or ends the series after the last
   // height); a third failure in a row ends it.
   void record(bool cleared);
+  // Still to jump at bar_height(): in the competition and not over this height yet.
+  bool jumping() const { return !done_ && !cleared_here_; }
+  // Cleared bar_height() and waits for the round to end and the bar to go up.
+  bool waiting() const { return !done_ && cleared_here_; }
+  void raise();  // to the next height; only while waiting()
   bool done() const { return done_; }
   double best() const { return best_; }  // 0: no height cleared
   int failures_at_best() const { return failures_at_best_; }
@@ -64,6 +72,7 @@ class HeightSeries {
   int total_failures_ = 0;
   int attempts_ = 0;
   double best_ = 0;
+  bool cleared_here_ = false;
   bool done_ = false;
 };
 

@@ -32,7 +32,8 @@ std::vector<LayoutBlock> high_jump_task_layout() {
 }
 
 std::vector<RefereeCall> high_jump_calls() {
-  return {{"cleared", "the bar was cleared: height, attempt", kAnnounced},
+  return {{"cleared", "the bar was cleared: height, attempt (jump_off: true in a jump-off)",
+           kAnnounced},
           {"failure",
            "a failed attempt: reason (bar_dislodged, touched_beyond, fell, left_area, time, "
            "under_the_bar), "
@@ -43,13 +44,15 @@ std::vector<RefereeCall> high_jump_calls() {
 
 HighJumpMatch::HighJumpMatch(const HighJumpRules& rules, const ModeSpec& mode, Layout layout,
                              const MatchSettings& settings)
-    : SmplMatch(mode, std::move(layout), settings), rules_(rules) {
+    : SmplMatch(mode, std::move(layout), settings),
+      rules_(rules),
+      rounds_(slot_count(), rules_.heights, rules_.tries_per_height, rules_.jump_off_step) {
   for (int slot = 0; slot < slot_count(); ++slot) {
-    Athlete a{athletics::HeightSeries(rules_.heights, rules_.tries_per_height),
-              HighJumpReferee(rules_),
+    Athlete a{HighJumpReferee(rules_),
               std::make_unique<Crossbar>(scene().world(), rules_, rules_.bar_x, bar_y(slot),
                                          rules_.heights.front()),
               0.0,
+              true,
               std::nullopt,
               Eigen::Vector3d::Zero(),
               Eigen::Vector3d::Zero()};
@@ -99,13 +102,14 @@ BarStep HighJumpMatch::read_step(int slot) const {
 void HighJumpMatch::after_physics_step(double) {
   for (int slot = 0; slot < slot_count(); ++slot) {
     Athlete& a = athletes_[slot];
-    if (a.series.done() || a.decided) continue;
+    if (!a.in_attempt || a.decided) continue;
     if (auto d = a.referee.step(read_step(slot))) a.decided = *d;
     a.root_prev = player(slot).body_state(0).position;
   }
 }
 
 void HighJumpMatch::settle_tick() {
+  bool recorded = false;
   for (int slot = 0; slot < slot_count(); ++slot) {
     Athlete& a = athletes_[slot];
     const Eigen::Vector3d root = player(slot).body_state(0).position;
@@ -113,45 +117,52 @@ void HighJumpMatch::settle_tick() {
     a.reward_root_prev = root;
     set_reward(slot, terms);
     if (a.decided) {
-      const double height = a.bar->height();
-      a.series.record(a.decided->cleared);
-      nlohmann::json e = referee_event(a.decided->cleared ? "cleared" : "failure", time(), slot);
-      e["height"] = height;
-      e["attempt"] = a.series.attempts();
-      if (!a.decided->cleared) e["reason"] = a.decided->reason;
-      log(std::move(e));
-      a.decided.reset();
-      if (!a.series
-               .done()) {  // the next attempt: the bar up (at the series' height), back to the mark
-        a.bar->set(a.series.bar_height());
-        reset_player(slot, jittered_start_mark(slot));
-        a.referee = HighJumpReferee(rules_);
-        a.attempt_start = time();
-        a.root_prev = a.reward_root_prev = player(slot).body_state(0).position;
-      }
+      record_attempt(slot);
+      recorded = true;
     }
-    outcome_.scores[slot] = static_cast<float>(a.series.best());
+    outcome_.scores[slot] = static_cast<float>(rounds_.series(slot).best());
   }
-  if (std::all_of(athletes_.begin(), athletes_.end(),
-                  [](const Athlete& a) { return a.series.done(); }))
-    finish();
+  if (recorded)  // a try round may be over: the next tries, at the bar's height now, in slot order
+    for (int slot = 0; slot < slot_count(); ++slot)
+      if (rounds_.due(slot) && !athletes_[slot].in_attempt) start_attempt(slot);
+  if (rounds_.over()) finish();
+}
+
+void HighJumpMatch::record_attempt(int slot) {
+  Athlete& a = athletes_[slot];
+  const double height = a.bar->height();
+  const bool jump_off = rounds_.in_jump_off();
+  rounds_.record(slot, a.decided->cleared);
+  nlohmann::json e = referee_event(a.decided->cleared ? "cleared" : "failure", time(), slot);
+  e["height"] = height;
+  e["attempt"] = rounds_.series(slot).attempts();
+  if (jump_off) e["jump_off"] = true;
+  if (!a.decided->cleared) e["reason"] = a.decided->reason;
+  log(std::move(e));
+  a.decided.reset();
+  a.in_attempt = false;
+}
+
+// The next attempt: the bar at the competition's height, the athlete back to its mark.
+void HighJumpMatch::start_attempt(int slot) {
+  Athlete& a = athletes_[slot];
+  a.bar->set(rounds_.bar_height());
+  reset_player(slot, jittered_start_mark(slot));
+  a.referee = HighJumpReferee(rules_);
+  a.attempt_start = time();
+  a.root_prev = a.reward_root_prev = player(slot).body_state(0).position;
+  a.in_attempt = true;
 }
 
 void HighJumpMatch::finish() {
-  std::vector<athletics::HeightSeries> series;
   std::vector<float> best;
-  for (const auto& a : athletes_) {
-    series.push_back(a.series);
-    best.push_back(static_cast<float>(a.series.best()));
-  }
-  athletics::end_competition(outcome_, athletics::places(series), best, "series_complete");
+  for (const auto& s : rounds_.all_series()) best.push_back(static_cast<float>(s.best()));
+  athletics::end_competition(outcome_, rounds_.places(), best, "series_complete");
 }
 
 void HighJumpMatch::on_time_limit() {
   SmplMatch::on_time_limit();
-  std::vector<athletics::HeightSeries> series;
-  for (const auto& a : athletes_) series.push_back(a.series);
-  outcome_.info["places"] = athletics::places(series);
+  outcome_.info["places"] = rounds_.places();  // the countback's: an unfinished jump-off shares
 }
 
 void HighJumpMatch::write_task_observation(int slot, const HeadingFrame& frame,
@@ -166,13 +177,14 @@ void HighJumpMatch::write_task_observation(int slot, const HeadingFrame& frame,
   const double t = time() - a.attempt_start;
   out.begin("attempt")
       .field("height")
-      .put(a.series.bar_height())
+      .put(rounds_.bar_height())
       .field("tries_left")
-      .put(static_cast<double>(a.series.tries_left_at_height()))
+      .put(rounds_.in_jump_off() ? 1.0
+                                 : static_cast<double>(rounds_.series(slot).tries_left_at_height()))
       .field("time_left")
       .put(std::clamp(1.0 - t / rules_.attempt_s, 0.0, 1.0))
       .field("best")
-      .put(a.series.best());
+      .put(rounds_.series(slot).best());
 }
 
 void HighJumpMatch::extra_state(std::vector<double>& values) const {

@@ -1,7 +1,9 @@
 // A high-jump match: one installation (uprights, a free crossbar, the landing mat) per athlete,
-// side by side lane_spacing apart; each athlete jumps its series (tries per height, the bar
-// raised after a clearance) from its start mark; the match ends when every series is over and
-// ranks the athletes by the countback.
+// side by side lane_spacing apart; the athletes jump at the same time from their start marks, in
+// rounds (athletics/height_rounds.h: one bar height for all, raised when everyone still in has
+// cleared it or is out; official rules break a tie for first by a jump-off); an athlete whose
+// attempt is decided waits, unjudged, until its next try; the match ends when the competition is
+// over and ranks the athletes by the countback (and the jump-off).
 #pragma once
 
 #include <memory>
@@ -10,6 +12,7 @@
 
 #include "athletics/athlete_probe.h"
 #include "athletics/attempt_series.h"
+#include "athletics/height_rounds.h"
 #include "framework/jittered_start.h"
 #include "framework/smpl_match.h"
 #include "high_jump/crossbar.h"
@@ -31,7 +34,10 @@ class HighJumpMatch : public SmplMatch {
                 const MatchSettings& settings);
 
   const HighJumpRules& rules() const { return rules_; }
-  const athletics::HeightSeries& series(int slot) const { return athletes_[slot].series; }
+  const athletics::HeightSeries& series(int slot) const { return rounds_.series(slot); }
+  const athletics::HeightRounds& rounds() const { return rounds_; }
+  // Whether the athlete is in an attempt now (else it waits for its next try, or is out).
+  bool in_attempt(int slot) const { return athletes_[slot].in_attempt; }
   const Crossbar& bar(int slot) const { return *athletes_[slot].bar; }
   double lane_y(int slot) const { return slot * rules_.lane_spacing; }
   // Tests: the athlete's humanoid and its bar, to set a scene up by hand.
@@ -40,10 +46,10 @@ class HighJumpMatch : public SmplMatch {
 
  private:
   struct Athlete {
-    athletics::HeightSeries series;
     HighJumpReferee referee;
     std::unique_ptr<Crossbar> bar;
     double attempt_start = 0;
+    bool in_attempt = true;  // judged; false while it waits for its next try
     std::optional<BarDecision> decided;
     Eigen::Vector3d root_prev = Eigen::Vector3d::Zero();         // the last physics step's
     Eigen::Vector3d reward_root_prev = Eigen::Vector3d::Zero();  // the last tick's
@@ -72,9 +78,12 @@ class HighJumpMatch : public SmplMatch {
     return jittered_start(m.position.head<2>(), m.yaw, rng());
   }
   BarStep read_step(int slot) const;
+  void record_attempt(int slot);
+  void start_attempt(int slot);
   void finish();
 
   HighJumpRules rules_;
+  athletics::HeightRounds rounds_;
   std::vector<Athlete> athletes_;
   std::vector<const core::GeomTag*> mat_tags_;  // per slot, null without a mat
 };

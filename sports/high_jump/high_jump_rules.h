@@ -23,8 +23,11 @@ struct HighJumpRules {
   // is a failure (left_area). The seed's start mark is 20.9 m from the bar's centre.
   double runup_radius = 25.0;
   bool landing_mat = false;  // the 6 x 4 x 0.7 m soft mat behind the bar (TR 27.9); the seed: none
-  std::vector<double> heights{1.0};      // m, the bar's top, in the order they are jumped
-  int tries_per_height = 1;              // the seed's episode: 1; TR 26.4: 3
+  std::vector<double> heights{1.0};  // m, the bar's top, in the order they are jumped
+  int tries_per_height = 1;          // the seed's episode: 1; TR 26.4: 3
+  // m the jump-off for first place (TR 26.9) raises or lowers the bar by; 0: no jump-off, a tie
+  // after the countback shares first place (the paper rules)
+  double jump_off_step = 0.0;
   double attempt_s = 20.0;               // s per attempt (TR 25.17: 1 minute)
   double settle_s = 1.5;                 // s on the landing area, bar still up, before a clearance
   double lane_spacing = 12.0;            // m between a competition's installations

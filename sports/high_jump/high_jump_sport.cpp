@@ -42,7 +42,7 @@ std::vector<SettingSpec> HighJumpSport::settings() const {
                           "m, the first height (the seed trains at 0.5, 1.0, 1.5 and 2.0)", 0.3,
                           2.5),
       SettingSpec::number("bar_raise", 0.0,
-                          "m the bar goes up after a clearance (0: one height, the seed's "
+                          "m the bar goes up per round (0: one height, the seed's "
                           "episode; TR 26.7: at least 0.02)",
                           0, 0.5)
           .with_official(0.05),
@@ -76,6 +76,9 @@ HighJumpRules HighJumpSport::rules(const nlohmann::json& options) const {
   r.heights.clear();
   for (int i = 0; i < count; ++i) r.heights.push_back(first + i * raise);
   r.tries_per_height = s.at("tries");
+  // TR 26.9 lowers and raises by 2 cm; here by the competition's own raise, so that a jump-off
+  // bar is a height of the competition's ladder
+  r.jump_off_step = r.official && raise > 0 ? raise : 0.0;
   r.attempt_s = s.at("attempt_s");
   return r;
 }
@@ -83,8 +86,11 @@ HighJumpRules HighJumpSport::rules(const nlohmann::json& options) const {
 std::unique_ptr<SportMatch> HighJumpSport::create(const MatchSettings& settings) const {
   MatchSettings s = settings;
   const HighJumpRules r = rules(s.options);
-  if (s.time_limit_s <= 0)
+  if (s.time_limit_s <= 0) {  // every try at every height, and room for a short jump-off
     s.time_limit_s = r.attempt_s * r.tries_per_height * static_cast<double>(r.heights.size());
+    if (r.jump_off_step > 0 && modes_.at(s.mode).slot_count() > 1)
+      s.time_limit_s += 4 * r.attempt_s;
+  }
   return std::make_unique<HighJumpMatch>(r, modes_.at(s.mode), layout(s.mode), s);
 }
 

@@ -31,15 +31,18 @@ TEST(HorizontalSeries, BestMarkRanksFirstAndTiesGoToTheSecondBest) {
 
 TEST(HeightSeries, ThreeFailuresInARowEndTheSeriesAndTheCountbackBreaksTies) {
   HeightSeries a({1.0, 1.1, 1.2}, 3), b({1.0, 1.1, 1.2}, 3);
-  a.record(true);                                     // 1.0 at the first try
-  a.record(false), a.record(true);                    // 1.1 at the second
+  a.record(true);  // 1.0 at the first try
+  EXPECT_TRUE(a.waiting());
+  EXPECT_DOUBLE_EQ(a.bar_height(), 1.0) << "the bar stays until the round is over";
+  a.raise();
+  a.record(false), a.record(true), a.raise();         // 1.1 at the second
   a.record(false), a.record(false), a.record(false);  // out at 1.2
   EXPECT_TRUE(a.done());
   EXPECT_DOUBLE_EQ(a.best(), 1.1);
   EXPECT_EQ(a.failures_at_best(), 1);
   EXPECT_EQ(a.total_failures(), 4);
-  b.record(false), b.record(true);  // 1.0 at the second try
-  b.record(true);                   // 1.1 at the first
+  b.record(false), b.record(true), b.raise();  // 1.0 at the second try
+  b.record(true), b.raise();                   // 1.1 at the first
   EXPECT_DOUBLE_EQ(b.bar_height(), 1.2);
   EXPECT_FALSE(b.done());
   b.record(false), b.record(false), b.record(false);

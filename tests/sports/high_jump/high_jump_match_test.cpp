@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "../athletics/field_event_session.h"
 #include "high_jump/high_jump_sport.h"
@@ -101,6 +102,87 @@ TEST(HighJumpMatch, ABodyOverTheBarCleanlyIsAClearance) {
   EXPECT_DOUBLE_EQ(r.match->series(0).best(), 0.5);
   EXPECT_DOUBLE_EQ(r.match->series(0).bar_height(), 0.55) << "the bar goes up by the raise";
   EXPECT_DOUBLE_EQ(r.match->bar(0).height(), 0.55);
+}
+
+// A competition of two, stepped by hand: slot 0 is launched over its bar, slot 1 knocks its bar
+// off at once. The tries go round (slot 1's second try waits for slot 0's first to be decided)
+// and the bar rises only when slot 1 is out, though slot 0 cleared long before.
+bool step_until(Session& r, const std::function<bool()>& done, int ticks) {
+  for (int i = 0; i < ticks && !done(); ++i) r.step();
+  return done();
+}
+
+void launch_over_the_bar(Session& r, int slot) {
+  core::Humanoid& h = r.match->athlete(slot);
+  h.reset({{19.5, r.match->rules().bar_y + r.match->lane_y(slot), 2.1}, 0});
+  give_velocity(h, {3.0, 0, 0});
+}
+
+// Whether the last tick called an attempt of the slot (cleared or failure, the jump-off's too).
+bool attempt_called(const Session& r, int slot) {
+  for (const auto& e : r.match->outcome().info["events"])
+    if (e.value("slot", -1) == slot && (e["call"] == "cleared" || e["call"] == "failure"))
+      return true;
+  return false;
+}
+
+// Knocks the slot's bar off once its next attempt is on, and steps until the attempt is called
+// (the next try may start in the same tick).
+bool knock_the_bar(Session& r, int slot) {
+  if (!step_until(
+          r, [&] { return r.match->in_attempt(slot); }, 300))
+    return false;
+  dBodySetLinearVel(r.match->bar(slot).body(), 1.0, 0, 0);
+  for (int i = 0; i < 60; ++i) {
+    r.step();
+    if (attempt_called(r, slot)) return true;
+  }
+  return false;
+}
+
+TEST(HighJumpMatch, TheBarRisesOnlyWhenBothAthletesHaveHadTheirTriesAtIt) {
+  Session r = start("competition_2", {{"rules", "official"}, {"bar_height", 0.5}, {"heights", 3}});
+  launch_over_the_bar(r, 0);
+  ASSERT_TRUE(knock_the_bar(r, 1));
+  EXPECT_TRUE(r.match->in_attempt(0));
+  EXPECT_FALSE(r.match->in_attempt(1)) << "slot 1's second try waits for slot 0's first";
+  ASSERT_TRUE(step_until(
+      r, [&] { return !r.match->in_attempt(0); }, 150))
+      << "no clearance";
+  EXPECT_DOUBLE_EQ(r.match->series(0).best(), 0.5);
+  EXPECT_DOUBLE_EQ(r.match->rounds().bar_height(), 0.5) << "slot 1 is still in at 0.5";
+  EXPECT_DOUBLE_EQ(r.match->bar(0).height(), 0.5);
+  ASSERT_TRUE(knock_the_bar(r, 1));  // its second try
+  EXPECT_FALSE(r.match->in_attempt(0)) << "slot 0 waits, unjudged";
+  ASSERT_TRUE(knock_the_bar(r, 1));  // its third: out
+  EXPECT_TRUE(r.match->series(1).done());
+  EXPECT_DOUBLE_EQ(r.match->rounds().bar_height(), 0.55) << "slot 1 out: the bar goes up";
+  EXPECT_TRUE(r.match->in_attempt(0));
+  EXPECT_DOUBLE_EQ(r.match->bar(0).height(), 0.55);
+  for (int t = 0; t < 3; ++t) ASSERT_TRUE(knock_the_bar(r, 0));
+  r.step();
+  ASSERT_TRUE(r.match->outcome().match_over);
+  EXPECT_EQ(r.match->outcome().info["places"], (std::vector<int>{1, 2}));
+}
+
+// Both clear the one height at the first try: tied after the countback, they jump off at the
+// next height; slot 0 clears it, slot 1 fails, and the places are distinct.
+TEST(HighJumpMatch, ATieForFirstIsDecidedByAJumpOff) {
+  Session r = start("competition_2", {{"rules", "official"}, {"bar_height", 0.5}, {"heights", 1}});
+  launch_over_the_bar(r, 0);
+  launch_over_the_bar(r, 1);
+  ASSERT_TRUE(step_until(
+      r, [&] { return r.match->rounds().in_jump_off(); }, 150));
+  EXPECT_EQ(r.match->series(0).best(), r.match->series(1).best());
+  EXPECT_DOUBLE_EQ(r.match->rounds().bar_height(), 0.55) << "one try at the next height";
+  ASSERT_TRUE(step_until(
+      r, [&] { return r.match->in_attempt(0) && r.match->in_attempt(1); }, 5));
+  launch_over_the_bar(r, 0);
+  ASSERT_TRUE(knock_the_bar(r, 1));
+  ASSERT_TRUE(step_until(
+      r, [&] { return r.match->outcome().match_over; }, 150));
+  EXPECT_EQ(r.match->outcome().info["places"], (std::vector<int>{1, 2}));
+  EXPECT_DOUBLE_EQ(r.match->series(0).best(), 0.5) << "the jump-off places, the best stays";
 }
 
 TEST(HighJumpMatch, PaperClearsOnceEveryBodyIsPastTheBar) {
