@@ -150,7 +150,9 @@ TEST_P(Conformance, AForfeitEndsTheMatchForTheOtherTeam) {
   auto m = make(3, 10.0);
   Actions actions(*m, 1);
   for (int t = 0; t < 5 && !m->outcome().match_over; ++t) m->step(actions.next());
-  if (m->outcome().match_over) GTEST_SKIP() << "over before the forfeit: " << m->outcome().reason;
+  // A match these actions end within 5 ticks (a javelin let go at once) forfeits before its first
+  // step instead, so every sport and mode is checked.
+  if (m->outcome().match_over) m = make(3, 10.0);
   m->forfeit(0, "forfeit: test");
   EXPECT_TRUE(m->outcome().match_over);
   EXPECT_EQ(m->outcome().reason, "forfeit: test");
