@@ -7,6 +7,7 @@
 #include <set>
 
 #include "heat_rounds.h"
+#include "league_run_args.h"
 #include "league_store.h"
 #include "server_fixture.h"
 
@@ -16,30 +17,15 @@ namespace {
 std::vector<selfplay::Game> play_heats(const std::string& format, const std::string& dir) {
   ServerFixture server;
   const std::string db = dir + "/league.db";
-  Process run({program("olympics-league"),
-               "run",
-               "--db",
-               db,
-               "--name",
-               "rounds",
-               "--sport",
-               "long_jump",
-               "--mode",
-               "competition_4",
-               "--options",
-               R"({"rules": "official", "attempts": 1, "attempt_s": 2})",
-               "--format",
-               format,
-               "--entrants",
-               "zero,random:1,zero,random:2,zero,random:3,zero,random:4",
-               "--seed",
-               "5",
-               "--lcm-url",
-               server.url(),
-               "--log-dir",
-               dir,
-               "--quiet"},
-              dir + "/league.log");
+  const LeagueRun heats{db,
+                        "rounds",
+                        "long_jump",
+                        "competition_4",
+                        R"({"rules": "official", "attempts": 1, "attempt_s": 2})",
+                        format,
+                        "zero,random:1,zero,random:2,zero,random:3,zero,random:4",
+                        5};
+  Process run(league_run_args(heats, server.url(), dir), dir + "/league.log");
   EXPECT_EQ(run.wait(300), 0) << run.output();
   selfplay::LeagueStore store(db);
   auto games = store.games("rounds");

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "leaderboard.h"
+#include "league_run_args.h"
 #include "league_store.h"
 #include "ratings.h"
 #include "server_fixture.h"
@@ -55,30 +56,15 @@ TEST_P(RankedLeague, AnEightAthleteCompetitionIsStoredWithEightRankedPlacesAndRa
   const RankedSport& param = GetParam();
   ServerFixture server;
   const std::string dir = temp_dir(), db = dir + "/league.db";
-  Process run({program("olympics-league"),
-               "run",
-               "--db",
-               db,
-               "--name",
-               "final",
-               "--sport",
-               param.sport,
-               "--mode",
-               "competition_8",
-               "--options",
-               param.options,
-               "--format",
-               "round-robin",
-               "--entrants",
-               param.entrants,
-               "--seed",
-               std::to_string(param.seed),
-               "--lcm-url",
-               server.url(),
-               "--log-dir",
-               dir,
-               "--quiet"},
-              dir + "/league.log");
+  const LeagueRun final_heat{db,
+                             "final",
+                             param.sport,
+                             "competition_8",
+                             param.options,
+                             "round-robin",
+                             param.entrants,
+                             param.seed};
+  Process run(league_run_args(final_heat, server.url(), dir), dir + "/league.log");
   ASSERT_EQ(run.wait(300), 0) << run.output();
 
   selfplay::LeagueStore store(db);
@@ -171,31 +157,16 @@ TEST_P(RankedLeague, AnEightAthleteCompetitionIsStoredWithEightRankedPlacesAndRa
 
 std::unique_ptr<Process> heats_of_four(const ServerFixture& server, const std::string& db,
                                        const std::string& log) {
-  return std::make_unique<Process>(
-      std::vector<std::string>{program("olympics-league"),
-                               "run",
-                               "--db",
-                               db,
-                               "--name",
-                               "heats",
-                               "--sport",
-                               "long_jump",
-                               "--mode",
-                               "competition_4",
-                               "--options",
-                               R"({"rules": "official", "attempts": 1, "attempt_s": 2})",
-                               "--entrants",
-                               "zero,random:1,zero,random:2,zero,random:3",
-                               "--seed",
-                               "2",
-                               "--parallel",
-                               "1",
-                               "--lcm-url",
-                               server.url(),
-                               "--log-dir",
-                               temp_dir(),
-                               "--quiet"},
-      log);
+  const LeagueRun heats{db,
+                        "heats",
+                        "long_jump",
+                        "competition_4",
+                        R"({"rules": "official", "attempts": 1, "attempt_s": 2})",
+                        "",
+                        "zero,random:1,zero,random:2,zero,random:3",
+                        2,
+                        {"--parallel", "1"}};
+  return std::make_unique<Process>(league_run_args(heats, server.url(), temp_dir()), log);
 }
 
 // Six entrants in heats of four, killed with SIGKILL once a heat is done and resumed: every heat
