@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <random>
 #include <utility>
@@ -20,6 +21,16 @@ struct CrossEntropyRun {
   double min_sd = 0.03;  // the spreads never shrink below this
   std::uint64_t rng_seed = 1;
 };
+
+// A run sized by hand from the environment, as the disabled search tests take it: ITER
+// iterations (else `iterations`) of CANDIDATES candidates (else 150), the best tenth kept.
+inline CrossEntropyRun cross_entropy_run_from_env(int iterations) {
+  CrossEntropyRun run;
+  run.iterations = std::getenv("ITER") ? std::atoi(std::getenv("ITER")) : iterations;
+  run.candidates = std::getenv("CANDIDATES") ? std::atoi(std::getenv("CANDIDATES")) : 150;
+  run.elite = run.candidates / 10;
+  return run;
+}
 
 // Returns the means after the last iteration; `mean` and `sd` are the starting normals.
 inline std::vector<double> cross_entropy_search(

@@ -213,10 +213,7 @@ TEST(ScriptedHighJumpSearch, DISABLED_CrossEntropy) {
   if (const char* seeds = std::getenv("SEEDS")) std::sscanf(seeds, "%d-%d", &first, &last);
   nlohmann::json settings = {{"bar_height", height}};
   if (std::getenv("OFFICIAL")) settings["rules"] = "official";  // the whole preset, mat included
-  athletics::CrossEntropyRun run;
-  run.iterations = std::getenv("ITER") ? std::atoi(std::getenv("ITER")) : 10;
-  run.candidates = std::getenv("CANDIDATES") ? std::atoi(std::getenv("CANDIDATES")) : 150;
-  run.elite = run.candidates / 10;
+  const auto run = athletics::cross_entropy_run_from_env(10);
   athletics::cross_entropy_search(
       mean, sd,
       [&](const std::vector<double>& x) {

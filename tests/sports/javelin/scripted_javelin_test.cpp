@@ -99,7 +99,7 @@ TEST(ScriptedJavelin, ThrowsEachAttemptOfASeries) {
 }
 
 // The search that found the baseline's poses (run by hand: --gtest_also_run_disabled_tests;
-// ITER=n iterations of 150 candidates on seeds 1-3).
+// ITER=n iterations (12) of CANDIDATES (150) on seeds 1-3).
 TEST(ScriptedJavelinSearch, DISABLED_CrossEntropy) {
   std::vector<double> mean = {-1.040, 0.369,  -0.896, 0.257,  -0.289, -1.994, 1.074,
                               -0.032, 0.761,  -1.162, -0.206, 1.048,  -0.892, -0.012,
@@ -113,8 +113,7 @@ TEST(ScriptedJavelinSearch, DISABLED_CrossEntropy) {
     h.release_ticks = std::clamp(static_cast<int>(std::lround(x[19])), 1, 12);
     return h;
   };
-  athletics::CrossEntropyRun run;
-  if (std::getenv("ITER")) run.iterations = std::atoi(std::getenv("ITER"));
+  const auto run = athletics::cross_entropy_run_from_env(12);
   athletics::cross_entropy_search(
       mean, sd,
       [&](const std::vector<double>& x) {

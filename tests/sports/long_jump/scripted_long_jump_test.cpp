@@ -154,10 +154,7 @@ TEST(ScriptedLongJumpSearch, DISABLED_CrossEntropy) {
     for (double& m : mean) in >> m;
     for (double& d : sd) d *= std::getenv("SPREAD") ? std::atof(std::getenv("SPREAD")) : 1;
   }
-  athletics::CrossEntropyRun run;
-  run.iterations = std::getenv("ITER") ? std::atoi(std::getenv("ITER")) : 10;
-  run.candidates = std::getenv("CANDIDATES") ? std::atoi(std::getenv("CANDIDATES")) : 150;
-  run.elite = run.candidates / 10;
+  const auto run = athletics::cross_entropy_run_from_env(10);
   const std::uint64_t seeds = std::getenv("SEEDS") ? std::atoi(std::getenv("SEEDS")) : 4;
   athletics::cross_entropy_search(
       mean, sd,
