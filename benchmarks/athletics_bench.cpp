@@ -160,10 +160,7 @@ nlohmann::json golf_shots(const std::string& policy, const std::vector<std::uint
 }  // namespace
 
 nlohmann::json run_athletics_bench(const AthleticsBenchOptions& o) {
-  const std::string named = !o.seeds.empty()
-                                ? o.seeds
-                                : std::to_string(kFirstUnseenAthleticsSeed) + "-" +
-                                      std::to_string(kFirstUnseenAthleticsSeed + o.episodes - 1);
+  const std::string named = named_or_evaluation_seeds(o.seeds, o.episodes);
   const auto seeds = episode_seeds(named, 0);
   nlohmann::json report = {{"seeds", named}};
   auto wanted = [&o](const std::string& event) {

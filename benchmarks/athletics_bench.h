@@ -15,12 +15,9 @@
 
 namespace olympics::bench {
 
-// The default seeds start here: the scripted athletes were tuned on low seeds (docs/athletics.md
-// names them), never on these.
-constexpr std::uint64_t kFirstUnseenAthleticsSeed = 5001;
-
 struct AthleticsBenchOptions {
-  // Per policy and event, seeds kFirstUnseenSeed.. when `seeds` is empty.
+  // Per policy and event, the evaluation seeds from 5001 (kFirstEvaluationSeed) when `seeds` is
+  // empty.
   int episodes = 50;
   std::string seeds;  // or the seeds named: "9001-9050" (docs/figures.md)
   std::vector<std::string> policies = {"zero", "random", "scripted"};

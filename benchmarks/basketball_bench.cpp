@@ -167,9 +167,9 @@ nlohmann::json scripted_games(const std::vector<std::uint64_t>& seeds, double ga
 }  // namespace
 
 nlohmann::json run_basketball_bench(const BasketballBenchOptions& o) {
-  const std::vector<std::uint64_t> seeds = episode_seeds(o.seeds, o.throws);
-  nlohmann::json report = {{"free_throw", nlohmann::json::object()},
-                           {"seeds", o.seeds.empty() ? "1-" + std::to_string(o.throws) : o.seeds}};
+  const std::string named = named_or_evaluation_seeds(o.seeds, o.throws);
+  const std::vector<std::uint64_t> seeds = episode_seeds(named, 0);
+  nlohmann::json report = {{"free_throw", nlohmann::json::object()}, {"seeds", named}};
   for (const auto& p : o.free_throws ? o.policies : std::vector<std::string>{})
     report["free_throw"][p] =
         p == "scripted" ? scripted_throws(seeds, o.per_throw) : free_throws(p, seeds);

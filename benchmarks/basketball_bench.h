@@ -1,8 +1,8 @@
 // Basketball figures, the yardsticks learned players must beat: free throws with fixed seeds
-// (1..N) by policy (the fraction made, how they ended), the scripted shooter's from nearer
-// lines (it aims by the ballistic solution), and ticks/s of 1v1 and 2v2 (two and four
-// SMPL-X humanoids, the court and the ball) against the bare physics of as many SMPL-X
-// humanoids, measured interleaved.
+// (by default the evaluation seeds from 5001) by policy (the fraction made, how they ended), the
+// scripted shooter's from nearer lines (it aims by the ballistic solution), and ticks/s of 1v1 and
+// 2v2 (two and four SMPL-X humanoids, the court and the ball) against the bare physics of as many
+// SMPL-X humanoids, measured interleaved.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -12,7 +12,7 @@
 namespace olympics::bench {
 
 struct BasketballBenchOptions {
-  int throws = 100;   // free throws per policy (seeds 1..N) when `seeds` is empty
+  int throws = 100;  // free throws per policy (evaluation seeds 5001..5000+N) when `seeds` is empty
   std::string seeds;  // or the seeds named: "5001-5500,7001-7200" (docs/figures.md)
   std::vector<std::string> policies = {"scripted", "zero", "random"};
   std::vector<double> scripted_distances = {3.6, 4.0, 4.3};  // free-throw lines nearer than 4.6 m

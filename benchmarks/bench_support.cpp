@@ -50,6 +50,12 @@ std::unique_ptr<sports::SportMatch> play_in_process(
   return match;
 }
 
+std::string named_or_evaluation_seeds(const std::string& named, int n) {
+  if (!named.empty()) return named;
+  if (n <= 0) return "";  // none asked for (e.g. --matches 0)
+  return std::to_string(kFirstEvaluationSeed) + "-" + std::to_string(kFirstEvaluationSeed + n - 1);
+}
+
 std::vector<std::uint64_t> episode_seeds(const std::string& named, int n) {
   std::vector<std::uint64_t> seeds;
   if (named.empty()) {

@@ -33,6 +33,12 @@ double median(std::vector<double> v);
 // Episode seeds for a figure (docs/figures.md): "5001-5500,7001-7200" (ranges and single seeds,
 // comma-separated), or empty for 1..n. Throws std::invalid_argument saying what was wrong.
 std::vector<std::uint64_t> episode_seeds(const std::string& named, int n);
+// The project's evaluation seeds start here (docs/figures.md): no scripted player was tuned on
+// them, so a figure a bench reports by default is on seeds no tuning used.
+constexpr std::uint64_t kFirstEvaluationSeed = 5001;
+// The seeds a bench plays, as it reports them: the ones named, or n evaluation seeds
+// ("5001-5100" for n = 100; "" for none).
+std::string named_or_evaluation_seeds(const std::string& named, int n);
 // The Wilson score 95% interval of a rate: `hits` of `n` episodes.
 std::array<double, 2> wilson_95(int hits, int n);
 // A rate over episodes of different lengths, sum(counts) / sum(exposure) (e.g. falls per

@@ -157,9 +157,10 @@ nlohmann::json to_json(const BoutStats& st, const std::string& sport) {
 }  // namespace
 
 nlohmann::json run_combat_bench(const CombatBenchOptions& o) {
-  const std::vector<std::uint64_t> seeds = episode_seeds(o.seeds, o.bouts);
+  const std::string named = named_or_evaluation_seeds(o.seeds, o.bouts);
+  const std::vector<std::uint64_t> seeds = episode_seeds(named, 0);
   nlohmann::json report = {{"bouts", static_cast<int>(seeds.size())},
-                           {"seeds", o.seeds.empty() ? "1-" + std::to_string(o.bouts) : o.seeds},
+                           {"seeds", named},
                            {"sports", nlohmann::json::object()}};
   std::vector<std::array<std::string, 2>> pairings = {
       {"scripted", "scripted"}, {"scripted", "zero"}, {"random", "random"}};

@@ -114,14 +114,15 @@ nlohmann::json scripted_matches(const std::string& mode, const std::vector<std::
 }  // namespace
 
 nlohmann::json run_soccer_bench(const SoccerBenchOptions& o) {
-  const std::vector<std::uint64_t> seeds = episode_seeds(o.seeds, o.kicks);
-  nlohmann::json report = {{"penalty_kick", nlohmann::json::object()},
-                           {"seeds", o.seeds.empty() ? "1-" + std::to_string(o.kicks) : o.seeds}};
+  const std::string named = named_or_evaluation_seeds(o.seeds, o.kicks);
+  const std::vector<std::uint64_t> seeds = episode_seeds(named, 0);
+  nlohmann::json report = {{"penalty_kick", nlohmann::json::object()}, {"seeds", named}};
   for (const auto& p : o.policies) report["penalty_kick"][p] = penalty_kicks(p, seeds);
   if (o.keeper)
     report["penalty_kick_keeper"]["scripted"] = penalty_kicks("scripted", seeds, "scripted");
-  const std::vector<std::uint64_t> match_seeds = episode_seeds(o.match_seeds, o.matches);
-  report["match_seeds"] = o.match_seeds.empty() ? "1-" + std::to_string(o.matches) : o.match_seeds;
+  const std::string named_matches = named_or_evaluation_seeds(o.match_seeds, o.matches);
+  const std::vector<std::uint64_t> match_seeds = episode_seeds(named_matches, 0);
+  report["match_seeds"] = named_matches;
   for (const char* mode : {"1v1", "2v2"})
     report["scripted_" + std::string(mode)] = scripted_matches(mode, match_seeds, o.half_s);
   if (o.speed) {

@@ -11,7 +11,7 @@ BenchCommand basketball_command(CLI::App& app) {
                  "basketball: free throws made by policy, 1v1 and 2v2 ticks/s vs bare physics");
   auto o = std::make_shared<BasketballBenchOptions>();
   auto& cli = c.cli();
-  cli.add_option("--throws", o->throws, "free throws per policy (seeds 1..N)")
+  cli.add_option("--throws", o->throws, "free throws per policy (evaluation seeds 5001..5000+N)")
       ->check(CLI::PositiveNumber);
   add_seeds_option(cli, o->seeds, "free-throw");
   cli.add_option("--policies", o->policies,

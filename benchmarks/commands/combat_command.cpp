@@ -10,7 +10,7 @@ BenchCommand combat_command(CLI::App& app) {
                  "fencing / boxing: touches and punches per minute by pairing, ticks/s vs bare");
   auto o = std::make_shared<CombatBenchOptions>();
   auto& cli = c.cli();
-  cli.add_option("--bouts", o->bouts, "bouts per sport and pairing (seeds 1..N)")
+  cli.add_option("--bouts", o->bouts, "bouts per sport and pairing (evaluation seeds 5001..5000+N)")
       ->check(CLI::PositiveNumber);
   add_seeds_option(cli, o->seeds, "bout");
   cli.add_option("--challenger", o->challenger,

@@ -11,10 +11,11 @@ BenchCommand soccer_command(CLI::App& app) {
                  "soccer: penalty kicks scored by policy, scripted goals per 10 min, 2v2 ticks/s");
   auto o = std::make_shared<SoccerBenchOptions>();
   auto& cli = c.cli();
-  cli.add_option("--kicks", o->kicks, "penalty kicks per policy (seeds 1..N)")
+  cli.add_option("--kicks", o->kicks, "penalty kicks per policy (evaluation seeds 5001..5000+N)")
       ->check(CLI::PositiveNumber);
   add_seeds_option(cli, o->seeds, "penalty kick");
-  cli.add_option("--matches", o->matches, "scripted 1v1 and 2v2 matches (seeds 1..M)")
+  cli.add_option("--matches", o->matches,
+                 "scripted 1v1 and 2v2 matches (evaluation seeds 5001..5000+M)")
       ->check(CLI::NonNegativeNumber);
   add_seeds_option(cli, o->match_seeds, "match", "--match-seeds");
   cli.add_option("--half-s", o->half_s, "seconds per half of those matches")
