@@ -109,10 +109,11 @@ nlohmann::json mean_ci95(const std::vector<double>& v) {
 
 // Scripted 1v1 games, both slots the scripted team player, `game_s` seconds each. Points and falls
 // are per game scaled to 10 minutes and per minute; shots are the players' swings (a heave: from
-// beyond the set shot's reach), made is the counted baskets over them.
+// beyond the set shot's reach, the long shot; a throw out: the ball thrown out with the rim
+// behind), made is the counted baskets over them.
 nlohmann::json scripted_games(const std::vector<std::uint64_t>& seeds, double game_s) {
   std::vector<double> points[2], falls_per_min;
-  int shots = 0, heaves = 0, made = 0;
+  int shots = 0, heaves = 0, throws_out = 0, made = 0;
   std::map<std::string, int> stoppages;
   nlohmann::json games = nlohmann::json::array();
   for (const std::uint64_t seed : seeds) {
@@ -144,7 +145,8 @@ nlohmann::json scripted_games(const std::vector<std::uint64_t>& seeds, double ga
     const auto& score = match.referee().score();
     for (int side = 0; side < 2; ++side) points[side].push_back(score[side] * 10 / minutes);
     falls_per_min.push_back(falls / minutes);
-    for (const auto& p : players) shots += p.shots(), heaves += p.heaves();
+    for (const auto& p : players)
+      shots += p.shots(), heaves += p.heaves(), throws_out += p.throws_out();
     games.push_back({{"seed", seed},
                      {"minutes", minutes},
                      {"score", {score[0], score[1]}},
@@ -158,6 +160,7 @@ nlohmann::json scripted_games(const std::vector<std::uint64_t>& seeds, double ga
           {"falls_per_min", mean_ci95(falls_per_min)},
           {"shots", shots},
           {"heaves", heaves},
+          {"throws_out", throws_out},
           {"made", made},
           {"made_share_ci95", wilson_95(made, std::max(shots, 1))},
           {"stoppages", stoppages},

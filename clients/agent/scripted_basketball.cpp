@@ -99,6 +99,37 @@ FreeThrowAim ScriptedBasketballPolicy::aim_for(std::span<const float> o) const {
   return aim;
 }
 
+// The long shot: for each measured row, the solution's speed at its launch angle from its
+// release point; the collar bones' lift where the row's speed meets it (interpolated between
+// rows; beyond the ends, the end).
+FreeThrowAim ScriptedBasketballPolicy::long_aim_for(std::span<const float> o) const {
+  const Eigen::Vector3d ball = vec3(o, ball_), rim = vec3(o, rim_);
+  const Eigen::Vector3d towards =
+      Eigen::Vector3d(rim.x() - ball.x(), rim.y() - ball.y(), 0).normalized();
+  FreeThrowAim aim;
+  aim.elevation = shot_.swing.back().elevation;
+  double last_gap = 0;
+  for (size_t i = 0; i < shot_.long_swing.size(); ++i) {
+    const LongSwingResponse& row = shot_.long_swing[i];
+    const Eigen::Vector3d release = ball + row.ahead * towards + Eigen::Vector3d(0, 0, row.up);
+    const double carry = (rim - release).head<2>().norm(), rise = rim.z() - release.z();
+    const double needed =
+        launch_speed_for(carry, rise, row.launch_deg * M_PI / 180, shot_.ball_drag);
+    const double gap = row.speed - (needed + shot_.long_speed_bias);  // > 0: this row flies long
+    if (i == 0 || gap <= 0) {
+      aim.thorax = row.thorax, aim.carry = carry, aim.rise = rise, aim.launch_speed = needed;
+    } else {
+      const LongSwingResponse& before = shot_.long_swing[i - 1];
+      const double s = -last_gap / (gap - last_gap);
+      aim.thorax = before.thorax + s * (row.thorax - before.thorax);
+      aim.carry = carry, aim.rise = rise, aim.launch_speed = needed;
+    }
+    if (gap > 0) break;
+    last_gap = gap;
+  }
+  return aim;
+}
+
 // The swing's turn that brings the predicted release speed to the solution's (see FreeThrowShot).
 double ScriptedBasketballPolicy::release_trim(std::span<const float> o) const {
   // Heading frame, relative to the root: z is up.
@@ -115,6 +146,37 @@ double ScriptedBasketballPolicy::release_trim(std::span<const float> o) const {
   for (size_t i = 0; i < x.size(); ++i) predicted += shot_.trim_coef[i] * x[i];
   const double wanted = aim_.launch_speed + shot_.twist_speed * trunk_twist(clock_s_);
   return std::clamp((wanted - predicted) / shot_.trim_gain, shot_.trim_min, shot_.trim_max);
+}
+
+// The long shot's drives (see FreeThrowShot::swing_thorax): added to the set shot's targets.
+void ScriptedBasketballPolicy::add_long_shot_drives(std::span<float> a, double t) const {
+  const bool swinging = t >= shot_.shot_s;
+  if (shot_.crouch_knee != 0 && t >= shot_.crouch_from_s) {
+    const double s = control::minimum_jerk(
+        std::clamp((t - shot_.crouch_from_s) / (shot_.shot_s - shot_.crouch_from_s), 0.0, 1.0));
+    const double knee = swinging ? shot_.swing_knee : s * shot_.crouch_knee;
+    for (int hip : {kLHip, kRHip}) {
+      set_joint(a, hip, 1, joint_angle(a, hip, 1) - knee / 2);
+      set_joint(a, hip + 1, 1, knee);
+      set_joint(a, hip + 2, 1, joint_angle(a, hip + 2, 1) - knee / 2);
+    }
+  }
+  if (!swinging) return;
+  if (shot_.swing_trunk != 0)
+    for (int link : {kTorso, kSpine, kChest})
+      set_joint(a, link, 1, joint_angle(a, link, 1) - shot_.swing_trunk / 3);
+  if (shot_.swing_yaw != 0)
+    for (int link : {kTorso, kSpine, kChest})
+      set_joint(a, link, 2, joint_angle(a, link, 2) + shot_.swing_yaw / 3);
+  if (shot_.swing_thorax_yaw != 0)
+    for (int thorax : {kLThorax, kRThorax})
+      set_joint(a, thorax, 2, joint_angle(a, thorax, 2) + shot_.swing_thorax_yaw);
+  const double lift = shot_.long_shot ? aim_.thorax : shot_.swing_thorax;
+  if (lift != 0)
+    for (int thorax : {kLThorax, kRThorax})
+      set_joint(a, thorax, 1,
+                joint_angle(a, thorax, 1) - lift -
+                    (thorax == kRThorax ? 1 : -1) * shot_.swing_thorax_right);
 }
 
 double ScriptedBasketballPolicy::trunk_twist(double t) const {
@@ -152,7 +214,8 @@ void ScriptedBasketballPolicy::act(std::span<const float> o, std::span<float> a)
   const Eigen::Vector3d rim = vec3(o, rim_);
   const double rim_bearing = std::atan2(rim.y(), rim.x());
   if (std::isnan(first_rim_bearing_)) first_rim_bearing_ = rim_bearing;
-  double bearing = rim_bearing + shot_.aim_offset;
+  double bearing = rim_bearing + (shot_.long_shot ? shot_.long_aim_offset : shot_.aim_offset);
+  if (shot_.throw_ahead) bearing = shot_.long_aim_offset;
   const double t = clock_s_;
   const double twist = trunk_twist(t);
   for (int link : {kTorso, kSpine, kChest}) set_joint(a, link, 2, twist / 3);
@@ -172,12 +235,13 @@ void ScriptedBasketballPolicy::act(std::span<const float> o, std::span<float> a)
   } else if (t < shot_.shot_s) {
     pose = blend(under, hold, (t - 0.45) / 0.2);
   } else {
-    if (!aimed_) aim_ = aim_for(o), aimed_ = true;
+    if (!aimed_) aim_ = shot_.long_shot ? long_aim_for(o) : aim_for(o), aimed_ = true;
+    if (shot_.throw_ahead) aim_.thorax = shot_.long_swing.back().thorax;
     pose = hold;
     pose.elevation = aim_.elevation;
     pose.elbow = shot_.shot_elbow;
     pose.curl = shot_.shot_curl;
-    if (shot_.trim_tick > 0 && aim_.elevation >= shot_.trim_from_elevation) {
+    if (shot_.trim_tick > 0 && !shot_.long_shot && aim_.elevation >= shot_.trim_from_elevation) {
       pose.elevation -= shot_.trim_swing;
       if (++swing_tick_ >= shot_.trim_tick) pose.curl = shot_.trim_curl, bearing += shot_.trim_turn;
       if (swing_tick_ == shot_.trim_tick) trim_ = release_trim(o);
@@ -187,6 +251,7 @@ void ScriptedBasketballPolicy::act(std::span<const float> o, std::span<float> a)
   stand_on_ankles_and_hips(o, a, shot_);
   set_arm(a, false, bearing, pose);
   set_arm(a, true, bearing, pose);
+  add_long_shot_drives(a, t);
   clock_s_ += control_dt_;
 }
 

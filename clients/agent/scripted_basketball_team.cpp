@@ -1,6 +1,7 @@
 #include "scripted_basketball_team.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "ball_aim.h"
@@ -33,7 +34,7 @@ void ScriptedBasketballTeamPlayer::start(const MatchInfo& match) {
   presented_ = match.observation.offset("game", "presented_to_me");
   shooter_.reset();
   was_presented_ = false;
-  shots_ = heaves_ = 0;
+  shots_ = heaves_ = throws_out_ = 0;
 }
 
 void ScriptedBasketballTeamPlayer::act(std::span<const float> o, std::span<float> a) {
@@ -44,9 +45,17 @@ void ScriptedBasketballTeamPlayer::act(std::span<const float> o, std::span<float
   if (presented && !was_presented_) {
     FreeThrowShot shot = shot_;
     const bool in_reach = rim_in_reach(o);
-    // Beyond reach the aim asks for no speed it has: the strongest swing, untrimmed (the trim
-    // would turn it down towards the impossible solution's "no speed").
-    if (!in_reach) shot.trim_tick = 0;
+    // Beyond the set shot's reach: the long shot (the collar bones lift the arms too), aimed by
+    // the ballistic solution, untrimmed.
+    if (!in_reach) shot.long_shot = true, shot.trim_tick = 0;
+    // The rim behind me (the ball taken under the basket after the other side scored, to be
+    // cleared behind the arc, which I cannot walk to): throw it out over the far line at once,
+    // which hands the other side its check ball as the shot clock would, 12 s later.
+    const Eigen::Vector3d rim = vec3(o, rim_);
+    if (std::abs(std::atan2(rim.y(), rim.x())) > M_PI / 2) {
+      shot.long_shot = shot.throw_ahead = true, shot.trim_tick = 0, shot.twist_gain = 0;
+      ++throws_out_;
+    }
     shooter_.emplace(shot);
     shooter_->start(match_);
     shot_clock_s_ = 0;

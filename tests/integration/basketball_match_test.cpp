@@ -32,8 +32,8 @@ TEST(BasketballMatch, A1v1BetweenTwoAgentProcessesIsStoredWithItsScoreAndReplays
 
 TEST(BasketballMatch, ScriptedTeamPlayersInTwoAgentProcessesShootAndTheMatchReplays) {
   // `--policy scripted` in 1v1 is the team player (clients/agent/scripted_basketball_team.h):
-  // the check ball's taker shoots (from 7.5 m, beyond the set shot's reach: a heave that lands
-  // short and bounces out), the other side takes the next check ball, and so on.
+  // the check ball's taker shoots (from 7.5 m, beyond the set shot's reach: the long shot, which
+  // goes in or comes off the rim and bounces out), the other side takes the next ball, and so on.
   ServerFixture server;
   const std::vector<std::string> common = {"--request-id", "scripted", "--sport",  "basketball",
                                            "--mode",       "1v1",      "--seed",   "1",

@@ -39,6 +39,11 @@ struct Throw {
   // it meets the rim): m to the left (+) or right (-) of the rim's centre, seen from the release
   // point; NaN if it never does. The rim's centre is over the court's origin.
   double side_at_rim_m = NAN;
+  // There: m beyond (+) or short of (-) the rim's centre, along the line from the release.
+  double long_at_rim_m = NAN;
+  double release_elevation_deg = NAN;  // the ball's direction at the release, above the horizontal
+  bool fell = false;                   // the shooter's root below 0.5 m at any tick
+  Vector3d ball_at_swing = Vector3d::Zero(), ball_at_release = Vector3d::Zero();
   client::FreeThrowAim aim;
 };
 
@@ -71,6 +76,7 @@ Throw shoot(std::uint64_t seed, const nlohmann::json& settings = {},
       t.ball_from_palms_m = ball_from_palms();
       const Vector3d ball = b.ball().position();
       t.ball_ahead_m = Vector3d(-ball.x(), -ball.y(), 0).normalized().dot(ball - palms());
+      t.ball_at_swing = ball;
     }
     m->observe(0, obs);
     shooter.act(obs, act);
@@ -78,12 +84,17 @@ Throw shoot(std::uint64_t seed, const nlohmann::json& settings = {},
     t.highest_m = std::max(t.highest_m, b.ball().position().z());
     const Vector3d ball = b.ball().position();
     if (tick >= swing_tick && t.release_speed == 0 && ball_from_palms() >= 0.2) {
-      t.release_speed = b.ball().velocity().norm();
+      const Vector3d v = b.ball().velocity();
+      t.release_speed = v.norm();
+      t.ball_at_release = ball;
+      t.release_elevation_deg = std::atan2(v.z(), v.head<2>().norm()) * 180 / M_PI;
       towards_rim = Vector3d(-ball.x(), -ball.y(), 0).normalized();
     } else if (t.release_speed > 0 && std::isnan(t.side_at_rim_m) && b.ball().velocity().z() < 0 &&
                ball.z() < 3.05 + 0.13) {
       t.side_at_rim_m = Vector3d::UnitZ().cross(towards_rim).dot(Vector3d(ball.x(), ball.y(), 0));
+      t.long_at_rim_m = towards_rim.dot(Vector3d(ball.x(), ball.y(), 0));
     }
+    if (h.body_state(0).position.z() < 0.5) t.fell = true;
   }
   t.reason = m->outcome().reason;
   t.score = m->outcome().scores[0];
@@ -300,6 +311,99 @@ TEST(BasketballFreeThrow, AFallAfterTheReleaseDoesNotEndTheThrow) {
   }
   EXPECT_NE(find_call(events, "fall"), nullptr) << "the shooter should have fallen";
   EXPECT_EQ(m->outcome().reason, "missed");
+}
+
+}  // namespace
+}  // namespace olympics::sports::basketball
+
+namespace olympics::sports::basketball {
+namespace {
+
+TEST(ScriptedFreeThrow, TheLongShotReachesTheSolutionFrom75MetresWhereTheSetShotCannot) {
+  // The team player's long shot (issue 30, fourth round: the collar bones lift the arms too) from
+  // the check ball's 7.5 m (the root 7.5 m from the rim's centre), seeds 201..220 (tuning seeds,
+  // not among the 1..40 its table was measured on): how many leave the hands within 0.3 m/s of
+  // the speed its aim asks (the ballistic solution's plus the bias with which the release reads,
+  // `long_speed_bias`), and the same for the set shot (its strongest swing, untrimmed, 7.5-8.3
+  // m/s, where the solution asks about 10). Measured: 14 of 20 long shots, no set shot.
+  client::FreeThrowShot long_shot, set_shot;
+  long_shot.long_shot = true;
+  long_shot.trim_tick = set_shot.trim_tick = 0;
+  int long_within = 0, set_within = 0;
+  for (std::uint64_t seed = 201; seed <= 220; ++seed) {
+    const Throw l = shoot(seed, {{"free_throw_distance", 7.525}}, long_shot);
+    const Throw s = shoot(seed, {{"free_throw_distance", 7.525}}, set_shot);
+    ASSERT_GT(l.aim.launch_speed, 9) << "from 7.5 m the solution asks for some 10 m/s";
+    long_within +=
+        std::abs(l.release_speed - l.aim.launch_speed - long_shot.long_speed_bias) <= 0.3;
+    set_within += std::abs(s.release_speed - s.aim.launch_speed) <= 0.3;
+  }
+  std::printf("from 7.5 m, seeds 201..220, within 0.3 m/s of the aim: long shot %d, set shot %d\n",
+              long_within, set_within);
+  EXPECT_GE(long_within, 11);
+  EXPECT_EQ(set_within, 0);
+}
+
+}  // namespace
+}  // namespace olympics::sports::basketball
+
+namespace olympics::sports::basketball {
+namespace {
+
+double env_or(const char* name, double fallback) {
+  const char* v = std::getenv(name);
+  return v ? std::atof(v) : fallback;
+}
+
+// A hand-run probe of long shots (issue 30, fourth round): the shot's drives from the
+// environment (LS_*), one line a throw. Not a check.
+TEST(ScriptedFreeThrow, DISABLED_LongShotProbe) {
+  client::FreeThrowShot shot;
+  shot.fixed_elevation = env_or("LS_ELEV", 2.6);
+  shot.trim_tick = static_cast<int>(env_or("LS_TRIM", 0));
+  shot.swing_thorax = env_or("LS_THORAX", 0);
+  shot.swing_trunk = env_or("LS_TRUNK", 0);
+  shot.crouch_knee = env_or("LS_CROUCH", 0);
+  shot.crouch_from_s = env_or("LS_CROUCH_FROM", 0.65);
+  shot.swing_knee = env_or("LS_SWING_KNEE", 0);
+  shot.shot_elbow = env_or("LS_ELBOW", shot.shot_elbow);
+  shot.shot_s = env_or("LS_SHOT_S", shot.shot_s);
+  shot.aim_offset = env_or("LS_AIM_OFFSET", shot.aim_offset);
+  shot.trim_turn = env_or("LS_TURN", shot.trim_turn);
+  shot.swing_yaw = env_or("LS_YAW", 0);
+  shot.swing_thorax_right = env_or("LS_RIGHT", 0);
+  shot.swing_thorax_yaw = env_or("LS_THORAX_YAW", 0);
+  if (env_or("LS_LONG", 0) != 0) {
+    shot.long_shot = true;
+    shot.trim_tick = 0;
+    shot.fixed_elevation = NAN;
+    shot.long_speed_bias = env_or("LS_BIAS", shot.long_speed_bias);
+    shot.long_aim_offset = env_or("LS_AIM_OFFSET", shot.long_aim_offset);
+  }
+  const double line = env_or("LS_LINE", 7.525);
+  const int first = static_cast<int>(env_or("LS_FIRST", 1)),
+            last = static_cast<int>(env_or("LS_LAST", 10));
+  double sum = 0;
+  int n = 0, falls = 0, made = 0;
+  for (int seed = first; seed <= last; ++seed) {
+    const Throw t = shoot(seed, {{"free_throw_distance", line}}, shot);
+    const Vector3d d = t.ball_at_release - t.ball_at_swing;
+    const double ahead =
+        Vector3d(-t.ball_at_swing.x(), -t.ball_at_swing.y(), 0).normalized().dot(d);
+    const Vector3d rim(0, 0, 3.05);
+    const double needed = client::launch_speed_for(
+        (rim - t.ball_at_release).head<2>().norm(), rim.z() - t.ball_at_release.z(),
+        t.release_elevation_deg * M_PI / 180, shot.ball_drag);
+    std::printf("needed %.2f ", needed);
+    std::printf("thorax %.3f ", t.aim.thorax);
+    std::printf(
+        "seed %d speed %.2f angle %.1f high %.2f long %.2f side %.2f fell %d %s aim %.2f ahead "
+        "%.3f up %.3f\n",
+        seed, t.release_speed, t.release_elevation_deg, t.highest_m, t.long_at_rim_m,
+        t.side_at_rim_m, t.fell, t.reason.c_str(), t.aim.launch_speed, ahead, d.z());
+    sum += t.release_speed, ++n, falls += t.fell, made += t.reason == "basket";
+  }
+  std::printf("mean speed %.2f falls %d made %d of %d\n", sum / n, falls, made, n);
 }
 
 }  // namespace
