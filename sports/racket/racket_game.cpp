@@ -86,11 +86,11 @@ RacketGame table_tennis_game() {
   g.feed_speed_lo = 2;
   g.feed_speed_hi = 3;
   // ITTF law 2.6: from the open palm, behind the end line and above the table, rising at least
-  // 16 cm (here about 25 cm), struck as it falls.
-  g.toss_forward = 0.5;
-  g.toss_side = 0.45;
-  g.toss_z = 1.0;
-  g.toss_speed = 2.3;
+  // 16 cm (here about 30 cm), struck as it falls.
+  g.toss_forward = 0.4;
+  g.toss_side = 0.3;
+  g.toss_z = 0.85;
+  g.toss_speed = 2.6;
   g.target_x_lo = 0.3;
   g.target_x_hi = 1.2;
   g.target_y = 0.6;

@@ -238,8 +238,14 @@ void RacketMatch::toss() {
   const core::RootPlacement at = start_placement(server_slot_);
   const Eigen::Vector2d forward(std::cos(at.yaw), std::sin(at.yaw));
   const Eigen::Vector2d right(forward.y(), -forward.x());
-  const Eigen::Vector2d xy = at.position.head<2>() + g.toss_forward * forward + g.toss_side * right;
-  flight_.set_state({xy.x(), xy.y(), g.toss_z}, {0, 0, g.toss_speed});
+  // A hand's toss is never quite the same: the seed moves it by up to toss_jitter m each way
+  // and its speed by up to toss_speed_jitter m/s.
+  std::uniform_real_distribution<double> jitter(-1, 1);
+  const double forward_by = g.toss_forward + g.toss_jitter * jitter(rng());
+  const double side_by = g.toss_side + g.toss_jitter * jitter(rng());
+  const double speed = g.toss_speed + g.toss_speed_jitter * jitter(rng());
+  const Eigen::Vector2d xy = at.position.head<2>() + forward_by * forward + side_by * right;
+  flight_.set_state({xy.x(), xy.y(), g.toss_z}, {0, 0, speed});
 }
 
 void RacketMatch::before_physics_step() {
