@@ -39,22 +39,23 @@ void first_serve(const std::string& sport, std::uint64_t seed, ServeTally& tally
       players[s].act(obs[s], act[s]);
     }
     match->step({std::span<const float>(act[0]), std::span<const float>(act[1])});
+    // This tick's calls, the serve's outcome judged on all of them (a bounce out and its fault
+    // come in the same tick).
+    bool bounced_in = false, point = false;
     for (const auto& ev : match->outcome().info.value("events", nlohmann::json::array())) {
       const std::string call = ev.value("call", "");
       if (call == "toss") {
         tossed = true;
         receiver_side = ev.at("slot").get<int>() == 0 ? 1 : -1;  // 1v1: slot = team
-        continue;
       }
       if (!tossed) continue;
-      ++tally.serves;
-      if (call == "fault") return void(++tally.faults);
-      if (call == "let") return void(++tally.lets);
-      if (call == "point") return void(++tally.other);
-      if (call == "bounce" && ev.at("x").get<double>() * receiver_side > 0)
-        return void(++tally.legal);
-      --tally.serves;  // the serve goes on (a hit, its own bounce, the net)
+      if (call == "fault") return ++tally.faults, void(++tally.serves);
+      if (call == "let") return ++tally.lets, void(++tally.serves);
+      point = point || call == "point";
+      bounced_in = bounced_in || (call == "bounce" && ev.at("x").get<double>() * receiver_side > 0);
     }
+    if (bounced_in) return ++tally.legal, void(++tally.serves);
+    if (point) return ++tally.other, void(++tally.serves);
   }
   ++tally.serves, ++tally.other;
 }
