@@ -1,7 +1,8 @@
 // The scripted racket player's serve (`start: "serve"`, control/serve_plan.h) against the
 // referee: the first serve of each seed's 1v1 match, both players scripted. Tuned on seeds 1-40;
 // the tests use seeds 201-220. OLYMPICS_SERVE_FIGURE_SEEDS=106001-106300 measures the figure of
-// docs/racket-sports.md instead (legal serves per serve with a Wilson 95% interval, per sport).
+// docs/racket-sports.md instead (legal serves per serve with a Wilson 95% interval, per sport;
+// OLYMPICS_SERVE_FIGURE_MODE=2v2 for doubles).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -22,23 +23,26 @@ struct ServeTally {
   int serves = 0, legal = 0, faults = 0, lets = 0, other = 0;
 };
 
-// Plays `sport` 1v1 with serves from `seed` until its first serve is decided; adds it to `tally`.
-void first_serve(const std::string& sport, std::uint64_t seed, ServeTally& tally) {
-  auto match = sports::sport_or_throw(sport).create({"1v1", seed, 20.0, {{"start", "serve"}}});
+// Plays `sport` (1v1 or 2v2) with serves from `seed` until its first serve is decided; adds it to
+// `tally`.
+void first_serve(const std::string& sport, std::uint64_t seed, ServeTally& tally,
+                 const std::string& mode = "1v1") {
+  auto match = sports::sport_or_throw(sport).create({mode, seed, 20.0, {{"start", "serve"}}});
   const auto layout = ObservationLayout::from_blocks(match->layout().observation);
-  ScriptedRacketPolicy players[2];
-  for (auto& p : players) p.start({sport, "1v1", core::kControlDt, layout, 69});
-  std::vector<float> obs[2] = {std::vector<float>(match->obs_size()),
-                               std::vector<float>(match->obs_size())};
-  std::vector<float> act[2] = {std::vector<float>(69), std::vector<float>(69)};
+  const int n = match->slot_count();
+  std::vector<ScriptedRacketPolicy> players(n);
+  for (auto& p : players) p.start({sport, mode, core::kControlDt, layout, 69});
+  std::vector<std::vector<float>> obs(n, std::vector<float>(match->obs_size())),
+      act(n, std::vector<float>(69));
+  std::vector<std::span<const float>> acts(act.begin(), act.end());
   int receiver_side = 0;  // the x sign of the receiver's half, once the toss is seen
   bool tossed = false;
   while (!match->outcome().match_over) {
-    for (int s = 0; s < 2; ++s) {
+    for (int s = 0; s < n; ++s) {
       match->observe(s, obs[s]);
       players[s].act(obs[s], act[s]);
     }
-    match->step({std::span<const float>(act[0]), std::span<const float>(act[1])});
+    match->step(acts);
     // This tick's calls, the serve's outcome judged on all of them (a bounce out and its fault
     // come in the same tick).
     bool bounced_in = false, point = false;
@@ -46,7 +50,7 @@ void first_serve(const std::string& sport, std::uint64_t seed, ServeTally& tally
       const std::string call = ev.value("call", "");
       if (call == "toss") {
         tossed = true;
-        receiver_side = ev.at("slot").get<int>() == 0 ? 1 : -1;  // 1v1: slot = team
+        receiver_side = ev.at("slot").get<int>() < n / 2 ? 1 : -1;  // slots 0..n/2-1: team 0
       }
       if (!tossed) continue;
       if (call == "fault") return ++tally.faults, void(++tally.serves);
@@ -60,11 +64,12 @@ void first_serve(const std::string& sport, std::uint64_t seed, ServeTally& tally
   ++tally.serves, ++tally.other;
 }
 
-ServeTally first_serves(const std::string& sport, std::uint64_t from, std::uint64_t to) {
+ServeTally first_serves(const std::string& sport, std::uint64_t from, std::uint64_t to,
+                        const std::string& mode = "1v1") {
   ServeTally t;
-  for (std::uint64_t seed = from; seed <= to; ++seed) first_serve(sport, seed, t);
-  std::printf("%s seeds %llu-%llu: %d legal of %d serves (%d faults, %d lets, %d other)\n",
-              sport.c_str(), static_cast<unsigned long long>(from),
+  for (std::uint64_t seed = from; seed <= to; ++seed) first_serve(sport, seed, t, mode);
+  std::printf("%s %s seeds %llu-%llu: %d legal of %d serves (%d faults, %d lets, %d other)\n",
+              sport.c_str(), mode.c_str(), static_cast<unsigned long long>(from),
               static_cast<unsigned long long>(to), t.legal, t.serves, t.faults, t.lets, t.other);
   return t;
 }
@@ -128,7 +133,8 @@ TEST(ScriptedRacketServe, FigureOnUnseenSeeds) {
   ASSERT_NE(dash, std::string::npos) << "OLYMPICS_SERVE_FIGURE_SEEDS: give a range, A-B";
   const std::uint64_t from = std::stoull(s.substr(0, dash)), to = std::stoull(s.substr(dash + 1));
   for (const char* sport : {"table_tennis", "tennis"}) {
-    const ServeTally t = first_serves(sport, from, to);
+    const char* mode = std::getenv("OLYMPICS_SERVE_FIGURE_MODE");
+    const ServeTally t = first_serves(sport, from, to, mode ? mode : "1v1");
     // Wilson 95% interval of legal / serves.
     const double n = t.serves, p = t.legal / n, z = 1.96, z2 = z * z;
     const double centre = (p + z2 / (2 * n)) / (1 + z2 / n);
