@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "control/drive_target.h"
+#include "control/serve_plan.h"
 #include "control/smpl_limbs.h"
 #include "control/stroke_plan.h"
 #include "smpl_observation.h"
@@ -335,6 +336,36 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
   set_joint(a, kLShoulder, 0, -1.2);
 }
 
+bool ScriptedRacketPolicy::plan_serve(std::span<const float> o, const CourtFrame& court,
+                                      const BodyPose& pose) {
+  const Play& play = sport_->play;
+  const Eigen::Vector3d ball = court.point(vec3(o, blocks_.ball));
+  const Eigen::Vector3d velocity = court.vector(vec3(o, blocks_.ball_velocity));
+  if (o[blocks_.bounces] > 0.5 || !control::is_toss(ball, velocity, court.root)) return false;
+  // Standing still, the arm meets the falling toss; planned once (the toss flies as predicted),
+  // unless the stroke is a rally's left from the point before (elsewhere than the toss).
+  if (stroke_ && (stroke_->ball_at - ball).head<2>().norm() < 0.2) {
+    stroke_->time_to_hit -= control_dt_;
+    return true;
+  }
+  stroke_.reset();
+  const auto serve = control::plan_serve(
+      sport_->path, sport_->path.predict(ball, velocity, 2.0),
+      court.point(pose.position[kRShoulder]), play.reach_fraction * sport_->arm_reach,
+      sport_->face_back, court.point(play.sweet_spot), control::serve_aim(sport_->game, court.root),
+      play.net_margin, control::kServeSoonestS);
+  if (serve)
+    stroke_ = Stroke{serve->contact.time,
+                     serve->contact.position,
+                     serve->shot.face.normal,
+                     serve->shot.face.direction,
+                     serve->shot.face.speed,
+                     true,
+                     court.root,
+                     std::nullopt};
+  return true;
+}
+
 bool ScriptedRacketPolicy::my_ball(const CourtFrame& court, const Eigen::Vector3d& partner,
                                    const Eigen::Vector3d& ball) {
   // A new point (the ball put back at the feed): nobody's turn yet.
@@ -386,6 +417,8 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
     // Committed: the swing is under way; the ball is met where it was planned.
     stroke_->time_to_hit -= control_dt_;
     if (stroke_->time_to_hit < -play.commit_s) stroke_.reset();
+  } else if (coming && plan_serve(o, court, pose)) {
+    // A toss to serve: the serve is planned (control/serve_plan.h).
   } else if (coming) {
     plan(o, court, pose);
   } else if (stroke_) {

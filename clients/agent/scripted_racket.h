@@ -16,6 +16,7 @@
 // - the legs: a StepController walks toward where the ball will be met, then stands balancing
 //   the centre of mass (control/body_model.h) while the arm swings; between balls it walks home.
 // In doubles, table-tennis partners strike in turn and tennis partners take the nearer ball.
+// With the racket sports' `start: "serve"` it serves the toss legally (control/serve_plan.h).
 // docs/racket-sports.md has its figures.
 #pragma once
 
@@ -61,6 +62,10 @@ class ScriptedRacketPolicy : public Policy {
   struct Sport;
   void plan(std::span<const float> o, const control::CourtFrame& court,
             const control::BodyPose& pose);
+  // `start: "serve"`: is the ball a toss for this player? Then the serve is planned (or kept)
+  // by the stroke planner (control/serve_plan.h).
+  bool plan_serve(std::span<const float> o, const control::CourtFrame& court,
+                  const control::BodyPose& pose);
   void drive_arm(const control::CourtFrame& court, const control::BodyPose& pose,
                  std::span<float> a);
 

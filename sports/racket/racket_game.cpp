@@ -50,6 +50,13 @@ RacketGame tennis_game(double net_height) {
   g.feed_z = 1.2;
   g.feed_speed_lo = 8;
   g.feed_speed_hi = 12;
+  // A toss above the head's height from the hand, struck on its way down (ITF rule 16).
+  g.toss_forward = 0.6;
+  g.toss_side = 0.75;
+  g.toss_z = 1.1;
+  g.toss_speed = 3.5;
+  g.service_line = 6.40;
+  g.serve_y = 0.5;
   g.target_x_lo = 8;
   g.target_x_hi = 11;
   g.target_y = 3;
@@ -78,6 +85,12 @@ RacketGame table_tennis_game() {
   g.feed_z = 1.4;
   g.feed_speed_lo = 2;
   g.feed_speed_hi = 3;
+  // ITTF law 2.6: from the open palm, behind the end line and above the table, rising at least
+  // 16 cm (here about 30 cm), struck as it falls.
+  g.toss_forward = 0.4;
+  g.toss_side = 0.3;
+  g.toss_z = 0.85;
+  g.toss_speed = 2.6;
   g.target_x_lo = 0.3;
   g.target_x_hi = 1.2;
   g.target_y = 0.6;

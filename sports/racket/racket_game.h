@@ -40,6 +40,15 @@ struct RacketGame {
   // [feed_speed_lo, hi], to a landing point uniform on the server's half.
   double feed_z = 0, feed_speed_lo = 0, feed_speed_hi = 0;
 
+  // `start: "serve"`: each point's ball is tossed for the server from toss_forward m ahead of its
+  // root and toss_side m to its racket (right) side, at height toss_z, rising at toss_speed m/s
+  // (each drawn by the seed within toss_jitter m and toss_speed_jitter m/s of that); not struck
+  // within serve_limit_s it is a fault. Tennis' service boxes reach service_line m
+  // from the net (ITF rule 1); the singles server stands serve_y m off the centre mark.
+  double toss_forward = 0, toss_side = 0, toss_z = 0, toss_speed = 0, serve_limit_s = 3;
+  double toss_jitter = 0.03, toss_speed_jitter = 0.1;
+  double service_line = 0, serve_y = 0;
+
   // Reward target on the opponent's half, from the hitter's view: |x| in [target_x_lo, hi],
   // |y| <= target_y.
   double target_x_lo = 0, target_x_hi = 0, target_y = 0;

@@ -96,7 +96,15 @@ std::vector<RefereeCall> racket_calls() {
       {"point", "a point is decided: winner_team, reason, culprit_slot, strokes (by both sides)",
        kAnnounced},
       {"fall", "a player fell (body): that side loses the point"},
-      {"let", "both sides fell at once: the point is played again", kAnnounced},
+      {"let",
+       "the point is played again: both sides fell at once, or (reason net_serve) a serve touched "
+       "the net and landed in",
+       kAnnounced},
+      {"toss", "start: serve: the ball is tossed for the server (slot)"},
+      {"fault",
+       "start: serve: the serve was not good (reason: not_struck, out, net, not_over, "
+       "no_bounce_on_own_court); tennis serves again once, then loses the point "
+       "(double_fault); table tennis loses it (fault)"},
       {"return_in", "ball return: the return landed in; the next ball comes"}};
 }
 
@@ -137,6 +145,15 @@ core::RootPlacement RacketMatch::start_placement(int slot) const {
   double y = 0;
   if (config_.mode == RacketMode::Doubles)
     y = (member_index(teams(), slot) == 0 ? 1 : -1) * side * config_.game.partner_y;
+  if (server_slot_ >= 0 && teams()[slot] == teams()[server_slot_]) {
+    // A server stands diagonally opposite where its serve must land (its partner beside it);
+    // table-tennis singles serve from anywhere behind the end line.
+    const int away = -receiver_y_sign();
+    if (config_.mode == RacketMode::Doubles)
+      y = (slot == server_slot_ ? away : -away) * config_.game.partner_y;
+    else if (!config_.game.on_table)
+      y = away * config_.game.serve_y;
+  }
   // Facing the net: team 0 (at -x) looks along +x, team 1 along -x.
   return {{side * config_.game.player_x, y, 0}, side < 0 ? 0.0 : M_PI};
 }
@@ -164,6 +181,11 @@ void RacketMatch::start_point() {
     for (int i = 0; i < slot_count(); ++i)
       if (teams()[i] == receiving_team && member_index(teams(), i) == member) fed_slot = i;
     ++served_points_;
+    if (config_.serve) {
+      server_slot_ = fed_slot;
+      faults_ = 0;
+      return toss();
+    }
   }
   referee_.start_point(receiving_team, fed_slot, time());
   referee_events_seen_ = 0;
@@ -183,6 +205,47 @@ void RacketMatch::start_point() {
             : feed_launch(config_.game, receiving_team, receiver_y >= 0 ? 1 : -1, doubles, rng());
   }
   flight_.set_state(launch.position, launch.velocity);
+}
+
+int RacketMatch::receiver_y_sign() const {
+  // Tennis serves from the right (deuce) court when the game's points so far are even, the
+  // left otherwise (ITF rule 8; a tie-break too); table-tennis doubles from the right half to the
+  // right half (ITTF 2.6.3); the receiver's right is the server's diagonal.
+  const int server_team = teams()[server_slot_];
+  const int right_to_right = -RacketGame::side_sign(server_team);
+  if (config_.game.on_table) return config_.mode == RacketMode::Doubles ? right_to_right : 0;
+  const auto* tennis = dynamic_cast<const TennisScore*>(scoreboard_.get());
+  const int played = tennis ? tennis->points()[0] + tennis->points()[1] : 0;
+  return played % 2 == 0 ? right_to_right : -right_to_right;
+}
+
+void RacketMatch::toss() {
+  for (int i = 0; i < slot_count(); ++i) reset_player(i, start_placement(i));
+  const RacketGame& g = config_.game;
+  ServeRule rule;
+  rule.server_slot = server_slot_;
+  rule.receiver_y_sign = receiver_y_sign();
+  rule.second_serve = faults_ > 0;
+  rule.limit_s = g.serve_limit_s;
+  referee_.start_serve(teams()[server_slot_], rule, time());
+  referee_events_seen_ = 0;
+  for (int i = 0; i < slot_count(); ++i) {
+    struck_[i] = 0;
+    target_[i] = draw_target(i);
+    reaction_[i].setZero();
+  }
+  // In front of the server's racket (right) side, rising straight up.
+  const core::RootPlacement at = start_placement(server_slot_);
+  const Eigen::Vector2d forward(std::cos(at.yaw), std::sin(at.yaw));
+  const Eigen::Vector2d right(forward.y(), -forward.x());
+  // A hand's toss is never quite the same: the seed moves it by up to toss_jitter m each way
+  // and its speed by up to toss_speed_jitter m/s.
+  std::uniform_real_distribution<double> jitter(-1, 1);
+  const double forward_by = g.toss_forward + g.toss_jitter * jitter(rng());
+  const double side_by = g.toss_side + g.toss_jitter * jitter(rng());
+  const double speed = g.toss_speed + g.toss_speed_jitter * jitter(rng());
+  const Eigen::Vector2d xy = at.position.head<2>() + forward_by * forward + side_by * right;
+  flight_.set_state({xy.x(), xy.y(), g.toss_z}, {0, 0, speed});
 }
 
 void RacketMatch::before_physics_step() {
@@ -274,6 +337,10 @@ void RacketMatch::settle_tick() {
   const auto& calls = referee_.events();
   for (; referee_events_seen_ < calls.size(); ++referee_events_seen_)
     log(calls[referee_events_seen_]);
+  if (referee_.replay() != RallyReferee::Replay::None) {  // a first fault or a let: serve again
+    faults_ += referee_.replay() == RallyReferee::Replay::Fault;
+    toss();
+  }
 
   const bool ball_return = config_.mode == RacketMode::BallReturn;
   if (ball_return && !referee_.call() && referee_.striker_team() == 0 && referee_.bounces() == 1) {

@@ -8,7 +8,8 @@
 // ball_return: one player on team 0; balls come from the far side one after another. A return
 // that lands in counts as a hit and the next ball is launched; the episode ends when the player
 // loses a point (or falls). 1v1 / 2v2: every point starts with both sides reset to their places
-// and a ball fed towards the serving side; points go to the scoreboard until the match is won or
+// and a ball fed towards the serving side (or, `start: "serve"`, tossed for the server to serve
+// it); points go to the scoreboard until the match is won or
 // the time limit ends it (then the leader wins).
 #pragma once
 
@@ -33,6 +34,7 @@ struct RacketMatchConfig {
   TableTennisFormat table_tennis;  // used by table tennis
   double max_rally_s = 10;         // no stroke for this long: the side to play loses the point
   bool feed_to_player = true;      // each point's first ball at the receiver (else anywhere)
+  bool serve = false;              // 1v1 / 2v2: each point starts with a toss for the server
 };
 
 // The task observation's blocks (after the self observation), shared with `describe`.
@@ -60,6 +62,8 @@ class RacketMatch : public SmplMatch {
   void extra_scene_poses(std::vector<float>& out) const override;
 
   void start_point();
+  void toss();  // `start: "serve"`: a ball tossed for the server (again after a fault or a let)
+  int receiver_y_sign() const;
   void handle_contact(const equipment::BallContact& c, double t);
   void probe_bodies(const Eigen::Vector3d& from, double t);
   core::RootPlacement start_placement(int slot) const;
@@ -81,6 +85,8 @@ class RacketMatch : public SmplMatch {
   std::vector<Eigen::Vector3d> reaction_;  // per slot: impulse on the hand for the next step
   std::vector<Eigen::Vector3d> reaction_at_;
   int served_points_ = 0;
+  int server_slot_ = -1;  // `start: "serve"`: who serves this point
+  int faults_ = 0;        // ...and its faults so far
   size_t referee_events_seen_ = 0;
   nlohmann::json points_ = nlohmann::json::array();  // every finished point, for the result
 };

@@ -31,12 +31,20 @@ std::vector<SettingSpec> RacketSport::settings() const {
       "each point's first ball: \"to_player\" at the receiver, landing deep (the seed's "
       "feed), or \"anywhere\" on the receiving half",
       {"to_player", "anywhere"});
+  const auto start = SettingSpec::choice(
+      "start", "feed",
+      "1v1 / 2v2: each point's first ball is \"feed\" (fed to the serving side, which plays the "
+      "first shot) or \"serve\" (tossed for the server, who must serve it into the diagonal "
+      "service box, or in table tennis onto its own court and then the receiver's)",
+      {"feed", "serve"});
   // Table tennis: the seed's table, net, ball and paddle are ITTF's; "official" changes nothing.
   if (table_tennis_)
     return {SettingSpec::rules_preset(),
             SettingSpec::number("games_to_win", 1, "games that win the match (best of 2n-1)", 1, 4),
             SettingSpec::number("points_per_game", 11, "points that win a game, by 2", 1, 21),
-            stall, feed};
+            stall,
+            feed,
+            start};
   return {
       SettingSpec::rules_preset(),
       SettingSpec::number("net_height", 1.0,
@@ -48,7 +56,8 @@ std::vector<SettingSpec> RacketSport::settings() const {
       SettingSpec::number("games_per_set", 6, "games that win a set, by 2; tie-break at n-n", 1, 6),
       SettingSpec::number("tiebreak_points", 7, "points that win a tie-break game, by 2", 1, 10),
       stall,
-      feed};
+      feed,
+      start};
 }
 
 RacketMatchConfig RacketSport::config(const std::string& mode,
@@ -58,6 +67,7 @@ RacketMatchConfig RacketSport::config(const std::string& mode,
   c.mode = racket_mode(modes_.at(mode).name);
   c.max_rally_s = s.at("max_rally_s").get<double>();
   c.feed_to_player = s.at("feed") == "to_player";
+  c.serve = s.at("start") == "serve";
   if (table_tennis_) {
     c.game = table_tennis_game();
     c.table_tennis.games_to_win = s.at("games_to_win");

@@ -10,8 +10,9 @@
 // - a ball that stops (rolls or rests for 0.3 s) counts as bounced again where it lies.
 //
 // Each point starts with a ball fed towards one team, which plays the first shot (the feed
-// counts as the other team's stroke). The referee keeps no physics: it is tested with made-up
-// sequences of touches.
+// counts as the other team's stroke), or (`start: "serve"`) with a ball tossed for the server,
+// which must serve it legally (start_serve). The referee keeps no physics: it is tested with
+// made-up sequences of touches.
 #pragma once
 
 #include <Eigen/Core>
@@ -32,6 +33,17 @@ struct PointCall {
   std::string reason;     // "out", "net", "double_bounce", "body_touch", ...
 };
 
+// A served point: who serves and where the serve must land (the match decides it from the score).
+struct ServeRule {
+  int server_slot = 0;
+  // The y sign (world frame) of the receiver's service box (tennis) or half of the table (table
+  // tennis doubles: the server's own bounce is then on the other y side, right half to right
+  // half); 0: the whole half (table-tennis singles).
+  int receiver_y_sign = 0;
+  bool second_serve = false;  // tennis: a fault now loses the point (table tennis: every fault)
+  double limit_s = 3;         // the toss not struck within this long: a fault
+};
+
 class RallyReferee {
  public:
   // slot_teams: team of each slot; 2v2 table tennis sets alternate_hitters.
@@ -41,6 +53,17 @@ class RallyReferee {
   // A new point: the ball is fed towards `receiving_team`; `first_hitter` is the slot expected to
   // play it when partners alternate (-1: either).
   void start_point(int receiving_team, int first_hitter, double time);
+  // A new served point: the ball is tossed for `rule.server_slot` of `serving_team`. The serve
+  // must be struck before the toss touches anything and within rule.limit_s; tennis: it must
+  // first bounce in the diagonal service box (ITF rules 8-11); table tennis: on the server's
+  // court, then over the net onto the receiver's (ITTF 2.6, 2.7). A fault (tennis' first, or a
+  // net cord that lands in: a let) asks for the serve again (replay()); otherwise the point is
+  // lost ("double_fault" in tennis, "fault" in table tennis).
+  void start_serve(int serving_team, const ServeRule& rule, double time);
+  enum class Replay { None, Fault, Let };
+  // The serve is to be taken again (the match tosses a new ball); nothing more is called till then.
+  Replay replay() const { return replay_; }
+  bool serving() const { return phase_ != Phase::Rally; }  // the serve has not landed in yet
 
   // The ball touched something at `time` (seconds since the match began).
   void racket_hit(int slot, double time);
@@ -68,6 +91,10 @@ class RallyReferee {
 
  private:
   void bounce(ArenaSurface surface, const Eigen::Vector3d& where, double time);
+  void serve_bounce(ArenaSurface surface, const Eigen::Vector3d& where, double time);
+  bool in_service_area(int team, const Eigen::Vector3d& where, int y_sign) const;
+  void fault(const std::string& detail, double time);
+  bool decided() const { return call_ || replay_ != Replay::None; }
   void lose(int team, int culprit, const std::string& reason);
   void event(const char* name, double time, int slot = -1);
 
@@ -86,6 +113,13 @@ class RallyReferee {
   int run_surface_ = -1;
   double run_start_ = 0, run_last_ = -1;
   std::optional<PointCall> call_;
+  // The serve: tossed, struck (till it lands in), or the rally under way.
+  enum class Phase { Rally, Toss, Served };
+  Phase phase_ = Phase::Rally;
+  ServeRule rule_;
+  double toss_time_ = 0;
+  bool serve_own_bounce_ = false;  // table tennis: the serve has bounced on the server's court
+  Replay replay_ = Replay::None;
   nlohmann::json events_ = nlohmann::json::array();
 };
 

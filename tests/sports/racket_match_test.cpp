@@ -97,5 +97,43 @@ TEST(RacketSports, RewardTermsAreReportedByName) {
   EXPECT_FLOAT_EQ(m->outcome().reward[0], terms[0] + terms[1] + terms[2] + terms[3]);
 }
 
+// `start: "serve"` with nobody swinging: every toss falls untouched. Tennis: a fault, the toss
+// again, the double fault; table tennis (doubles): the fault loses the point. The server stands
+// diagonally opposite the box it serves to, its partner on the other side.
+TEST(RacketSports, ServedPointsAreTossedAndUnstruckTossesAreFaults) {
+  for (const char* name : {"tennis", "table_tennis"}) {
+    auto m = make(name, "2v2", 5, {{"start", "serve"}});
+    std::vector<std::string> calls;
+    std::vector<float> zero(69, 0.0f);
+    std::vector<std::span<const float>> acts(m->slot_count(), zero);
+    nlohmann::json first_point;
+    for (int t = 0; t < 30 * 8 && first_point.is_null(); ++t) {
+      m->step(acts);
+      for (const auto& ev : m->outcome().info.value("events", nlohmann::json::array())) {
+        calls.push_back(ev.at("call"));
+        if (ev.at("call") == "fault") {
+          EXPECT_EQ(ev.at("reason"), "not_struck");
+        }
+        if (ev.at("call") == "point") first_point = ev;
+      }
+    }
+    ASSERT_FALSE(first_point.is_null()) << name;
+    const bool tennis = std::string(name) == "tennis";
+    const std::vector<std::string> expected =
+        tennis ? std::vector<std::string>{"toss", "fault", "toss", "fault", "point"}
+               : std::vector<std::string>{"toss", "fault", "point"};
+    EXPECT_EQ(calls, expected) << name;
+    EXPECT_EQ(first_point.at("reason"), tennis ? "double_fault" : "fault");
+  }
+  EXPECT_THROW(make("tennis", "1v1", 1, {{"start", "volley"}}), std::invalid_argument);
+}
+
+// The default feed is untouched by the serve: the same seed plays the same match with `start`
+// given as its default.
+TEST(RacketSports, FeedIsTheDefaultStart) {
+  auto a = make("table_tennis", "1v1", 9), b = make("table_tennis", "1v1", 9, {{"start", "feed"}});
+  EXPECT_EQ(play(*a, 300, 0.05f), play(*b, 300, 0.05f));
+}
+
 }  // namespace
 }  // namespace olympics::sports::racket

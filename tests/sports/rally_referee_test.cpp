@@ -135,5 +135,170 @@ TEST(RallyReferee, TableTennisDoublesPartnersAlternate) {
   EXPECT_EQ(r.call()->winner_team, 1);
 }
 
+// Served points (`start: "serve"`). Team 0 serves from -x; its deuce serve lands in the box at
+// 0 < x <= 6.40, 0 <= y <= 4.115 (the receiver's right), its ad serve at y <= 0.
+ServeRule tennis_serve(bool second, int receiver_y_sign = 1) {
+  ServeRule r;
+  r.server_slot = 0;
+  r.receiver_y_sign = receiver_y_sign;
+  r.second_serve = second;
+  return r;
+}
+
+TEST(RallyReferee, TennisServeInTheDiagonalBoxStartsTheRally) {
+  auto r = tennis_singles();
+  r.start_serve(0, tennis_serve(false), 0);
+  EXPECT_TRUE(r.serving());
+  r.racket_hit(0, 0.5);
+  r.surface_contact(kGround, Eigen::Vector3d(5, 2, 0), 1.2);
+  EXPECT_FALSE(r.call());
+  EXPECT_EQ(r.replay(), RallyReferee::Replay::None);
+  EXPECT_FALSE(r.serving());
+  EXPECT_EQ(r.bounces(), 1);
+  r.racket_hit(1, 1.5);  // returned after the bounce
+  EXPECT_FALSE(r.call());
+  EXPECT_EQ(r.striker_team(), 1);
+}
+
+TEST(RallyReferee, TennisServeOutsideTheBoxIsAFaultAndTwoLoseThePoint) {
+  auto r = tennis_singles();
+  // Past the service line, in the wrong (ad) box, and short of the net: faults on a first serve.
+  for (const Eigen::Vector3d& where :
+       {Eigen::Vector3d(8, 2, 0), Eigen::Vector3d(4, -2, 0), Eigen::Vector3d(-3, 0, 0)}) {
+    r.start_serve(0, tennis_serve(false), 0);
+    r.racket_hit(0, 0.5);
+    r.surface_contact(kGround, where, 1.2);
+    EXPECT_FALSE(r.call()) << where.transpose();
+    EXPECT_EQ(r.replay(), RallyReferee::Replay::Fault) << where.transpose();
+    EXPECT_EQ(r.events().back()["call"], "fault");
+    r.racket_hit(1, 1.5);  // nothing more is called till the serve is taken again
+    EXPECT_FALSE(r.call());
+  }
+  // The same serve on the second serve loses the point.
+  r.start_serve(0, tennis_serve(true), 2);
+  r.racket_hit(0, 2.5);
+  r.surface_contact(kGround, Eigen::Vector3d(8, 2, 0), 3.2);
+  ASSERT_TRUE(r.call());
+  EXPECT_EQ(r.call()->reason, "double_fault");
+  EXPECT_EQ(r.call()->winner_team, 1);
+  EXPECT_EQ(r.call()->culprit_slot, 0);
+  // The ad court's box is the other one.
+  r.start_serve(0, tennis_serve(true, -1), 4);
+  r.racket_hit(0, 4.5);
+  r.surface_contact(kGround, Eigen::Vector3d(4, -2, 0), 5.2);
+  EXPECT_FALSE(r.call());
+  EXPECT_FALSE(r.serving());
+}
+
+TEST(RallyReferee, TennisNetCordServeInIsALetAndAMissedTossAFault) {
+  auto r = tennis_singles();
+  r.start_serve(0, tennis_serve(true), 0);
+  r.racket_hit(0, 0.5);
+  r.surface_contact(kNet, Eigen::Vector3d(0, 1, 0.99), 0.9);
+  r.surface_contact(kGround, Eigen::Vector3d(3, 1, 0), 1.1);
+  EXPECT_FALSE(r.call());  // not even on the second serve
+  EXPECT_EQ(r.replay(), RallyReferee::Replay::Let);
+  EXPECT_EQ(r.events().back()["call"], "let");
+
+  r.start_serve(0, tennis_serve(false), 2);  // the toss falls untouched
+  r.surface_contact(kGround, Eigen::Vector3d(-11.3, -1, 0), 3);
+  EXPECT_EQ(r.replay(), RallyReferee::Replay::Fault);
+  EXPECT_EQ(r.events().back()["reason"], "not_struck");
+
+  r.start_serve(0, tennis_serve(true), 4);  // never struck within the limit
+  r.check_stall(6.9, 10);
+  EXPECT_FALSE(r.call());
+  r.check_stall(7.1, 10);
+  ASSERT_TRUE(r.call());
+  EXPECT_EQ(r.call()->reason, "double_fault");
+
+  r.start_serve(0, tennis_serve(false), 8);  // the receiver may not volley the serve
+  r.racket_hit(0, 8.5);
+  r.racket_hit(1, 9.0);
+  ASSERT_TRUE(r.call());
+  EXPECT_EQ(r.call()->reason, "volley");
+  EXPECT_EQ(r.call()->winner_team, 0);
+}
+
+TEST(RallyReferee, TableTennisServeMustBounceOnTheServersCourtFirst) {
+  RallyReferee r(table_tennis_game(), {0, 1}, false, false);
+  ServeRule rule;  // singles: anywhere on each court
+  const double z = 0.78;
+  r.start_serve(0, rule, 0);
+  r.racket_hit(0, 0.3);
+  r.surface_contact(kTable, Eigen::Vector3d(-0.6, 0.1, z), 0.5);
+  EXPECT_FALSE(r.call());
+  EXPECT_TRUE(r.serving());
+  r.surface_contact(kTable, Eigen::Vector3d(0.8, -0.2, z), 0.9);
+  EXPECT_FALSE(r.call());
+  EXPECT_FALSE(r.serving());
+  r.racket_hit(1, 1.2);  // returned after its bounce
+  EXPECT_FALSE(r.call());
+
+  // Straight onto the receiver's court: a fault, and in table tennis the point.
+  r.start_serve(0, rule, 2);
+  r.racket_hit(0, 2.3);
+  r.surface_contact(kTable, Eigen::Vector3d(0.8, -0.2, z), 2.7);
+  ASSERT_TRUE(r.call());
+  EXPECT_EQ(r.call()->reason, "fault");
+  EXPECT_EQ(r.call()->winner_team, 1);
+  EXPECT_EQ(r.events()[r.events().size() - 2]["reason"], "no_bounce_on_own_court");
+
+  // Twice on its own court, or off the end of the receiver's: faults.
+  r.start_serve(0, rule, 4);
+  r.racket_hit(0, 4.3);
+  r.surface_contact(kTable, Eigen::Vector3d(-0.9, 0, z), 4.5);
+  r.surface_contact(kTable, Eigen::Vector3d(-0.2, 0, z), 4.7);
+  ASSERT_TRUE(r.call());
+  EXPECT_EQ(r.call()->reason, "fault");
+  r.start_serve(0, rule, 6);
+  r.racket_hit(0, 6.3);
+  r.surface_contact(kTable, Eigen::Vector3d(-0.9, 0, z), 6.5);
+  r.surface_contact(kGround, Eigen::Vector3d(2.0, 0, 0.02), 6.9);
+  ASSERT_TRUE(r.call());
+  EXPECT_EQ(r.call()->reason, "fault");
+
+  // A net cord that then lands in: a let.
+  r.start_serve(0, rule, 8);
+  r.racket_hit(0, 8.3);
+  r.surface_contact(kTable, Eigen::Vector3d(-0.6, 0, z), 8.5);
+  r.surface_contact(kNet, Eigen::Vector3d(0, 0, 0.9), 8.7);
+  r.surface_contact(kTable, Eigen::Vector3d(0.3, 0, z), 8.8);
+  EXPECT_FALSE(r.call());
+  EXPECT_EQ(r.replay(), RallyReferee::Replay::Let);
+}
+
+TEST(RallyReferee, TableTennisDoublesServeGoesRightHalfToRightHalf) {
+  RallyReferee r(table_tennis_game(), {0, 0, 1, 1}, true, true);
+  ServeRule rule;
+  rule.server_slot = 1;
+  rule.receiver_y_sign = 1;  // team 0 faces +x: its right half is y < 0, the receiver's y > 0
+  const double z = 0.78;
+  r.start_serve(0, rule, 0);
+  r.racket_hit(1, 0.3);
+  r.surface_contact(kTable, Eigen::Vector3d(-0.6, -0.3, z), 0.5);
+  r.surface_contact(kTable, Eigen::Vector3d(0.8, 0.3, z), 0.9);
+  EXPECT_FALSE(r.call());
+  EXPECT_FALSE(r.serving());
+
+  r.start_serve(0, rule, 2);  // from the left half: a fault
+  r.racket_hit(1, 2.3);
+  r.surface_contact(kTable, Eigen::Vector3d(-0.6, 0.3, z), 2.5);
+  ASSERT_TRUE(r.call());
+  EXPECT_EQ(r.call()->reason, "fault");
+
+  r.start_serve(0, rule, 4);  // to the receiver's left half: a fault
+  r.racket_hit(1, 4.3);
+  r.surface_contact(kTable, Eigen::Vector3d(-0.6, -0.3, z), 4.5);
+  r.surface_contact(kTable, Eigen::Vector3d(0.8, -0.3, z), 4.9);
+  ASSERT_TRUE(r.call());
+  EXPECT_EQ(r.call()->reason, "fault");
+
+  r.start_serve(0, rule, 6);  // the partner may not serve
+  r.racket_hit(0, 6.3);
+  ASSERT_TRUE(r.call());
+  EXPECT_EQ(r.call()->reason, "wrong_hitter");
+}
+
 }  // namespace
 }  // namespace olympics::sports::racket

@@ -61,7 +61,8 @@ FaceMotion face_motion_for(const Eigen::Vector3d& in, const Eigen::Vector3d& out
 
 std::optional<ShotPlan> plan_shot(const BallPath& path, const Eigen::Vector3d& from,
                                   const Eigen::Vector3d& ball_in, const Eigen::Vector2d& target,
-                                  double net_margin, const Eigen::Vector3d& swing) {
+                                  double net_margin, const Eigen::Vector3d& swing,
+                                  double max_elevation) {
   const auto& game = path.game();
   const Eigen::Vector2d ahead = target - from.head<2>();
   const double distance = ahead.norm();
@@ -69,7 +70,7 @@ std::optional<ShotPlan> plan_shot(const BallPath& path, const Eigen::Vector3d& f
   const Eigen::Vector2d dir = ahead / distance;
   std::optional<ShotPlan> best;
   double best_cost = std::numeric_limits<double>::infinity();
-  for (double elevation = -0.3; elevation <= 1.0; elevation += 0.05) {
+  for (double elevation = -0.3; elevation <= max_elevation + 1e-9; elevation += 0.05) {
     const Eigen::Vector3d unit(dir.x() * std::cos(elevation), dir.y() * std::cos(elevation),
                                std::sin(elevation));
     // Bisection on speed: further with more speed at one elevation.

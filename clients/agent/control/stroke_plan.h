@@ -37,11 +37,12 @@ struct ShotPlan {
 
 // From `from` (ball centre at contact, court frame), arriving at `ball_in`: the shot that lands
 // at `target` (on the far half) and clears the net by at least `net_margin` m, with the least face
-// speed; nullopt when no elevation does.
+// speed; nullopt when no elevation (up to `max_elevation` radians) does.
 std::optional<ShotPlan> plan_shot(const BallPath& path, const Eigen::Vector3d& from,
                                   const Eigen::Vector3d& ball_in, const Eigen::Vector2d& target,
                                   double net_margin,
-                                  const Eigen::Vector3d& swing = Eigen::Vector3d::Zero());
+                                  const Eigen::Vector3d& swing = Eigen::Vector3d::Zero(),
+                                  double max_elevation = 1.0);
 
 // A face swung at a speed the arm can deliver: from `from`, arriving at `ball_in`, the face moving
 // at `face_velocity` (court frame), the normal (searched on a grid of azimuths and elevations)
