@@ -29,6 +29,16 @@ std::unique_ptr<sports::SportMatch> play_in_process(
     const std::string& sport, const sports::MatchSettings& settings,
     const std::vector<std::string>& policies,
     const std::function<void(const sports::SportMatch&)>& after_tick) {
+  return play_in_process_until(sport, settings, policies, [&](const sports::SportMatch& m) {
+    if (after_tick) after_tick(m);
+    return false;
+  });
+}
+
+std::unique_ptr<sports::SportMatch> play_in_process_until(
+    const std::string& sport, const sports::MatchSettings& settings,
+    const std::vector<std::string>& policies,
+    const std::function<bool(const sports::SportMatch&)>& done) {
   auto match = sports::sport_or_throw(sport).create(settings);
   const int n = match->slot_count();
   std::vector<std::unique_ptr<client::Policy>> players;
@@ -45,7 +55,7 @@ std::unique_ptr<sports::SportMatch> play_in_process(
       players[s]->act(obs[s], act[s]);
     }
     match->step(actions);
-    if (after_tick) after_tick(*match);
+    if (done(*match)) break;
   }
   return match;
 }

@@ -27,6 +27,11 @@ std::unique_ptr<sports::SportMatch> play_in_process(
     const std::string& sport, const sports::MatchSettings& settings,
     const std::vector<std::string>& policies,
     const std::function<void(const sports::SportMatch&)>& after_tick = {});
+// The same, stopped early once `done` (asked after every tick) says so.
+std::unique_ptr<sports::SportMatch> play_in_process_until(
+    const std::string& sport, const sports::MatchSettings& settings,
+    const std::vector<std::string>& policies,
+    const std::function<bool(const sports::SportMatch&)>& done);
 
 double median(std::vector<double> v);
 

@@ -101,6 +101,8 @@ std::vector<RefereeCall> racket_calls() {
        "the net and landed in",
        kAnnounced},
       {"toss", "start: serve: the ball is tossed for the server (slot)"},
+      {"serve_in",
+       "start: serve: the serve landed in (slot: the server); the receiver must play it"},
       {"fault",
        "start: serve: the serve was not good (reason: not_struck, out, net, not_over, "
        "no_bounce_on_own_court); tennis serves again once, then loses the point "

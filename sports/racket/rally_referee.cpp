@@ -163,6 +163,7 @@ void RallyReferee::serve_bounce(ArenaSurface surface, const Eigen::Vector3d& whe
     }
     phase_ = Phase::Rally;  // a good serve: the receiver must return it
     bounces_ = 1;
+    event("serve_in", time, rule_.server_slot);
     return;
   }
   fault(on_play_surface && own_half ? (netted_ ? "net" : "not_over") : "out", time);

@@ -1,13 +1,10 @@
 // The scripted racket player's serve (`start: "serve"`, control/serve_plan.h) against the
 // referee: the first serve of each seed's 1v1 match, both players scripted. Tuned on seeds 1-40;
-// the tests use seeds 201-220. OLYMPICS_SERVE_FIGURE_SEEDS=106001-106300 measures the figure of
-// docs/racket-sports.md instead (legal serves per serve with a Wilson 95% interval, per sport;
-// OLYMPICS_SERVE_FIGURE_MODE=2v2 for doubles).
+// the tests use seeds 201-220. The figure on unseen seeds is `olympics-bench racket --serves N`
+// (docs/racket-sports.md).
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 
 #include "core/control_rate.h"
@@ -17,13 +14,13 @@
 namespace olympics::client {
 namespace {
 
-// How a serve went: "legal" (it landed in, so the receiver had to play it), "fault", "let", or
-// what else ended it ("point": e.g. a fall before it landed).
+// How a serve went, as the referee called it: in (`serve_in`), a `fault`, a `let`, or neither
+// before the point ended (e.g. a fall).
 struct ServeTally {
   int serves = 0, legal = 0, faults = 0, lets = 0, other = 0;
 };
 
-// Plays `sport` (1v1 or 2v2) with serves from `seed` until its first serve is decided; adds it to
+// Plays `sport` (1v1 or 2v2) with serves from `seed` until its first serve is called; adds it to
 // `tally`.
 void first_serve(const std::string& sport, std::uint64_t seed, ServeTally& tally,
                  const std::string& mode = "1v1") {
@@ -35,33 +32,22 @@ void first_serve(const std::string& sport, std::uint64_t seed, ServeTally& tally
   std::vector<std::vector<float>> obs(n, std::vector<float>(match->obs_size())),
       act(n, std::vector<float>(69));
   std::vector<std::span<const float>> acts(act.begin(), act.end());
-  int receiver_side = 0;  // the x sign of the receiver's half, once the toss is seen
-  bool tossed = false;
+  ++tally.serves;
   while (!match->outcome().match_over) {
     for (int s = 0; s < n; ++s) {
       match->observe(s, obs[s]);
       players[s].act(obs[s], act[s]);
     }
     match->step(acts);
-    // This tick's calls, the serve's outcome judged on all of them (a bounce out and its fault
-    // come in the same tick).
-    bool bounced_in = false, point = false;
     for (const auto& ev : match->outcome().info.value("events", nlohmann::json::array())) {
       const std::string call = ev.value("call", "");
-      if (call == "toss") {
-        tossed = true;
-        receiver_side = ev.at("slot").get<int>() < n / 2 ? 1 : -1;  // slots 0..n/2-1: team 0
-      }
-      if (!tossed) continue;
-      if (call == "fault") return ++tally.faults, void(++tally.serves);
-      if (call == "let") return ++tally.lets, void(++tally.serves);
-      point = point || call == "point";
-      bounced_in = bounced_in || (call == "bounce" && ev.at("x").get<double>() * receiver_side > 0);
+      if (call == "serve_in") return void(++tally.legal);
+      if (call == "fault") return void(++tally.faults);
+      if (call == "let") return void(++tally.lets);
+      if (call == "point") return void(++tally.other);
     }
-    if (bounced_in) return ++tally.legal, void(++tally.serves);
-    if (point) return ++tally.other, void(++tally.serves);
   }
-  ++tally.serves, ++tally.other;
+  ++tally.other;
 }
 
 ServeTally first_serves(const std::string& sport, std::uint64_t from, std::uint64_t to,
@@ -122,26 +108,6 @@ TEST(ScriptedRacketServe, OneVsOneWithServesPlaysPoints) {
   EXPECT_GE(points, 5);
   EXPECT_GE(tosses, points);  // one serve per point, and one more per let
   EXPECT_GE(good_serve_points, 2);
-}
-
-// The figure (docs/racket-sports.md), only when asked for: OLYMPICS_SERVE_FIGURE_SEEDS=A-B.
-TEST(ScriptedRacketServe, FigureOnUnseenSeeds) {
-  const char* seeds = std::getenv("OLYMPICS_SERVE_FIGURE_SEEDS");
-  if (!seeds) GTEST_SKIP() << "set OLYMPICS_SERVE_FIGURE_SEEDS=106001-106300 to measure";
-  const std::string s(seeds);
-  const auto dash = s.find('-');
-  ASSERT_NE(dash, std::string::npos) << "OLYMPICS_SERVE_FIGURE_SEEDS: give a range, A-B";
-  const std::uint64_t from = std::stoull(s.substr(0, dash)), to = std::stoull(s.substr(dash + 1));
-  for (const char* sport : {"table_tennis", "tennis"}) {
-    const char* mode = std::getenv("OLYMPICS_SERVE_FIGURE_MODE");
-    const ServeTally t = first_serves(sport, from, to, mode ? mode : "1v1");
-    // Wilson 95% interval of legal / serves.
-    const double n = t.serves, p = t.legal / n, z = 1.96, z2 = z * z;
-    const double centre = (p + z2 / (2 * n)) / (1 + z2 / n);
-    const double half = z * std::sqrt(p * (1 - p) / n + z2 / (4 * n * n)) / (1 + z2 / n);
-    std::printf("FIGURE %s: legal serves %d of %d = %.1f%% (95%% %.1f-%.1f%%)\n", sport, t.legal,
-                t.serves, 100 * p, 100 * (centre - half), 100 * (centre + half));
-  }
 }
 
 }  // namespace
