@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "control/drive_target.h"
+#include "control/minimum_jerk.h"
 #include "control/serve_plan.h"
 #include "control/smpl_limbs.h"
 #include "control/stroke_plan.h"
@@ -36,6 +37,9 @@ struct Play {
   double swing_s = 0.25;          // the swing from the backswing to the ball
   double follow = 0;              // follow-through, m
   double max_speed = 0;           // face speed, m/s
+  // The straight backswing is drawn over this long, ending as the swing starts; until then the
+  // face waits at the ready point. 0: it is held at the back point from the stroke's planning.
+  double draw_s = 0;
   // The arm is asked for where the face should be this long after the tick starts (measured:
   // asking for the tick's end, or later, meets fewer balls).
   double ask_ahead_s = 0.02;
@@ -78,6 +82,12 @@ Play table_play() {
   // points without a stroke 40% -> 32% / 39% -> 32%, ball return (seeds 1-200) 33% -> 37%.
   p.legs.step_s = 0.25;
   p.legs.max_side_speed = 1.0;
+  // The backswing drawn over the last 0.4 s before the swing (from about 0.65 s before contact,
+  // as the legs settle), the face at the ready point until then: held drawn back from the
+  // stroke's planning, the arm lay across the body's line while the legs stepped, and the player
+  // fell. Tuning seeds 1-10 / 11-40: falls 0.91 -> 0.07 / 0.65 -> 0.23 a minute, strokes per
+  // point 1.17 -> 1.19 / 1.17 -> 1.28 (docs/racket-sports.md).
+  p.draw_s = 0.4;
   return p;
 }
 
@@ -285,6 +295,12 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
            (contact - line * back - shoulder).norm() > play.reach_fraction * sport_->arm_reach)
       back -= 0.02;
   }
+  auto ready = [&] {
+    control::LimbGoal g;
+    g.position = play.sweet_spot + Eigen::Vector3d(-0.1, 0, 0);
+    g.axis = court.to_heading_vector(Eigen::Vector3d::UnitX());
+    return g;
+  };
   // The face's pose at time `ahead` from now: along the stroke's line, or ready.
   auto goal_at = [&](double ahead) {
     control::LimbGoal g;
@@ -317,9 +333,18 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
       if (!stroke_->reachable) seen_from.root.head<2>() = stroke_->stance.head<2>();
       g.position = seen_from.to_heading_point(face) - root_velocity * ahead;
       g.axis = court.to_heading_vector(normal);
+      if (!stroke_->pivot && play.draw_s > 0) {
+        // Drawn back only in time for the swing: until then the face waits at the ready point
+        // (an arm held back across the body while the legs step topples the player).
+        const double until_swing = stroke_->time_to_hit - ahead - (speed > 0 ? back / speed : 0);
+        const double drawn = control::minimum_jerk(1 - until_swing / play.draw_s);
+        const control::LimbGoal r = ready();
+        g.position = r.position + drawn * (g.position - r.position);
+        const Eigen::Vector3d axis = r.axis + drawn * (g.axis - r.axis);
+        if (axis.norm() > 1e-6) g.axis = axis.normalized();
+      }
     } else {
-      g.position = play.sweet_spot + Eigen::Vector3d(-0.1, 0, 0);
-      g.axis = court.to_heading_vector(Eigen::Vector3d::UnitX());
+      g = ready();
     }
     return g;
   };
