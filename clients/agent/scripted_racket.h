@@ -9,7 +9,8 @@
 //   net, and the face normal and speed along a level swing that give it (control/stroke_plan.h);
 // - the arm: the face is drawn back along that level line and swung through the meeting point at
 //   the planned speed, timed to the ball (tennis: an arc turned about the shoulder, at a speed
-//   the arm can deliver, the face's normal solved for that speed); each tick the arm's joints come
+//   the arm can deliver, the face's normal solved for that speed; once the ball is within reach
+//   swung in joint space, scripted_tennis_swing.h); each tick the arm's joints come
 //   from inverse kinematics of the face's pose (control/limb_control.h), with gravity compensation
 //   and velocity feed-forward as PD-target offsets (control/drive_target.h), the root's motion
 //   allowed for;
