@@ -45,6 +45,7 @@ class ScriptedSoccerPolicy : public Policy {
   // the ball), "approach", "round", "push" (the dribble), "shoot_approach", "kick"; for
   // diagnosis and tests.
   const char* doing() const { return doing_; }
+  const SoccerKick& kick() const { return *kick_; }
 
   // What the player sees, from the observation (heading frame, from the root).
   struct View {

@@ -50,6 +50,30 @@ void SoccerKick::start(bool right_foot) {
   next(Phase::ShiftToKicker);
 }
 
+const char* SoccerKick::phase_name() const {
+  switch (phase_) {
+    case Phase::Idle:
+      return "idle";
+    case Phase::ShiftToKicker:
+      return "shift_to_kicker";
+    case Phase::Plant:
+      return "plant";
+    case Phase::ShiftToPlanted:
+      return "shift_to_planted";
+    case Phase::Back:
+      return "back";
+    case Phase::Swing:
+      return "swing";
+    case Phase::Land:
+      return "land";
+    case Phase::Settle:
+      return "settle";
+    case Phase::Catch:
+      return "catch";
+  }
+  return "?";
+}
+
 Eigen::Vector2d SoccerKick::approach_from_ball(const Eigen::Vector2d& direction,
                                                bool right_foot) const {
   const Eigen::Vector2d side(-direction.y(), direction.x());  // left of the kick
@@ -174,11 +198,24 @@ void SoccerKick::act(std::span<const float> o, const control::BodyPose& pose,
       const Eigen::Vector2d from = ankle2(kicker), to = ankle2(planter);
       const double l = kicker_share_l + s * ((1 - kicker_share_l) - kicker_share_l);
       support(o, pose, from + s * (to - from) + foot_ahead, l, 1 - l, a);
-      if (t_ >= g_.shift_s) {
+      // The kicking foot leaves the ground only once the weight is nearly over the planted foot
+      // (or after a little longer): lifted sooner, the body topples toward the kicking side.
+      const Eigen::Vector2d com = model_.centre_of_mass(pose).head<2>();
+      const bool over = std::abs((com - to).dot(side)) < g_.planted_within_m ||
+                        t_ >= g_.shift_s + g_.planted_wait_s;
+      if (t_ >= g_.shift_s && over) {
         lift_off_ = toe_of(kicker);
         swing_speed_ = std::clamp(ball_speed / g_.ball_per_foot, 1.0, g_.max_foot_speed);
         next(Phase::Back);
       }
+      return;
+    }
+    case Phase::Catch: {
+      // It steps while the centre of mass is off the feet or moving; the target, just to the
+      // kicking side, makes the kicking foot the first to step.
+      catching_->balance_centre_of_mass(model_.centre_of_mass(pose), 0.03);
+      catching_->act(o, Eigen::Vector2d(0, right_ ? -0.01 : 0.01), 0, a);
+      if (t_ >= g_.catch_s || (t_ > 0.5 && !catching_->stepping())) next(Phase::Idle);
       return;
     }
     default:
@@ -230,6 +267,16 @@ void SoccerKick::act(std::span<const float> o, const control::BodyPose& pose,
       if (s_at(t_) > 0) struck_ = true;
       if (s_at(t_) >= g_.follow_m) {
         swing_end_ = on_line(g_.follow_m) - base;
+        if (g_.catch_s > 0) {
+          // The body still falls toward the kicking side: a stepping controller of the kick's
+          // own, with quicker and longer steps than a walk's, catches it, the kicking foot first.
+          StepGains catching;
+          catching.step_s = g_.catch_step_s;
+          catching.max_step = g_.catch_max_step_m;
+          catching_.emplace(catching, dt_);
+          next(Phase::Catch);
+          return;
+        }
         next(g_.step_after ? Phase::Idle : Phase::Land);
       }
       return;
