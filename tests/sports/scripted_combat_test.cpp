@@ -95,3 +95,54 @@ TEST(ScriptedBoxingPolicy, MostBoutsGoThroughTheFirstRoundWithoutAKnockDown) {
 
 }  // namespace
 }  // namespace olympics::client
+
+// DIAG (temporary, not committed)
+#include <cstdio>
+#include "boxing/boxing_match.h"
+#include "smpl_observation.h"
+namespace olympics::client {
+TEST(BoxDiag, DISABLED_Run) {
+  const int s0 = std::atoi(std::getenv("S0") ? std::getenv("S0") : "1");
+  const int s1 = std::atoi(std::getenv("S1") ? std::getenv("S1") : "8");
+  const double secs = std::atof(std::getenv("SECS") ? std::getenv("SECS") : "60");
+  int tot_p = 0, tot_f = 0, tot_thrown = 0, tot_arr = 0, tot_blow = 0;
+  double tot_planted = 0, tot_ticks = 0;
+  for (int seed = s0; seed <= s1; ++seed) {
+    auto match = sports::sport_or_throw("boxing").create({"1v1", (std::uint64_t)seed, 0.0, {}});
+    auto* bm = dynamic_cast<sports::boxing::BoxingMatch*>(match.get());
+    const auto layout = ObservationLayout::from_blocks(match->layout().observation);
+    ScriptedBoxingPolicy players[2];
+    for (auto& p : players) p.start({"boxing", "1v1", core::kControlDt, layout, 69});
+    players[1].no_punch = std::getenv("NOPUNCH1") != nullptr;
+    std::vector<float> obs[2] = {std::vector<float>(match->obs_size()), std::vector<float>(match->obs_size())};
+    std::vector<float> act[2] = {std::vector<float>(69), std::vector<float>(69)};
+    int p = 0, f = 0, planted = 0, ticks = 0, setc = 0; double dsum = 0;
+    for (int tick = 0; tick < secs * 30 && !match->outcome().match_over; ++tick) {
+      for (int s = 0; s < 2; ++s) { match->observe(s, obs[s]); players[s].act(obs[s], act[s]); planted += players[s].planted(); setc += players[s].diag_set(); }
+      const int off = layout.offset("opponent_root", "position");
+      dsum += std::hypot(obs[0][off], obs[0][off+1]);
+      if (std::getenv("TRACE") && tick % 15 == 0) std::printf("t %.1f d %.2f bearing %.2f %.2f planted %d %d rest %.0f stepping %d %d v %.2f\n", tick/30.0, std::hypot(obs[0][off], obs[0][off+1]), std::atan2(obs[0][off+1], obs[0][off]), std::atan2(obs[1][off+1], obs[1][off]), players[0].planted(), players[1].planted(), obs[0][layout.offset("bout", "resting")], players[0].diag_stepping(), players[1].diag_stepping(), std::hypot(obs[0][smpl::kSelf.linear_velocity(0)], obs[0][smpl::kSelf.linear_velocity(0)+1]));
+      ++ticks;
+      match->step({std::span<const float>(act[0]), std::span<const float>(act[1])});
+      for (const auto& ev : match->outcome().info.value("events", nlohmann::json::array())) {
+        const std::string c = ev.value("call", "");
+        p += c == "punch"; f += c == "fall";
+        if (c == "fall") { const int sl = ev.value("slot", 0); const int off = layout.offset("opponent_root", "position"); std::printf("FALL seed %d slot %d body %s t %.1f d %.2f own_throw %.1fs ago opp_throw %.1fs ago\n", seed, sl, ev.value("body","").c_str(), tick/30.0, std::hypot(obs[0][off], obs[0][off+1]), players[sl].now - players[sl].last_throw, players[1-sl].now - players[1-sl].last_throw); }
+        if (std::getenv("TRACE") && (c == "fall" || c == "punch")) std::printf("EV %s\n", ev.dump().c_str());
+      }
+    }
+    int arr = 0, blow = 0; std::string sp;
+    for (const auto& a : bm->arrivals()) {
+      ++arr;
+      if (a.closing_speed >= 1.0 && a.knuckle_cos >= 0.5) ++blow;
+      if (a.closing_speed >= 0.7) { char b[64]; std::snprintf(b, 64, " %.2f/%.0f/%.0fN", a.closing_speed, std::acos(std::clamp(a.knuckle_cos,-1.0,1.0))*57.3, a.force); sp += b; }
+    }
+    const int th = players[0].thrown + players[1].thrown;
+    std::printf("set %.2f ", setc / (2.0 * ticks));
+    std::printf("seed %d: punches %d falls %d thrown %d planted %.2f dmean %.2f arrivals %d blows %d |%s\n", seed, p, f, th,
+                planted / (2.0 * ticks), dsum / ticks, arr, blow, sp.c_str());
+    tot_p += p; tot_f += f; tot_thrown += th; tot_arr += arr; tot_blow += blow; tot_planted += planted; tot_ticks += 2.0 * ticks;
+  }
+  std::printf("TOTAL punches %d falls %d thrown %d planted %.3f arrivals %d blows %d\n", tot_p, tot_f, tot_thrown, tot_planted / tot_ticks, tot_arr, tot_blow);
+}
+}  // namespace olympics::client
