@@ -11,11 +11,9 @@
 // - it stands still during the rest between rounds.
 #pragma once
 
-#include <memory>
 #include <optional>
 
 #include "policies.h"
-#include "scripted_boxing_punch.h"
 #include "step_controller.h"
 
 namespace olympics::client {
@@ -24,11 +22,6 @@ class ScriptedBoxingPolicy : public Policy {
  public:
   void start(const MatchInfo& match) override;
   void act(std::span<const float> observation, std::span<float> action) override;
-  bool planted() const { return planted_; }  // DIAG
-  int thrown = 0;                            // DIAG
-  double last_throw = -10, now = 0;          // DIAG
-  bool no_punch = false;                     // DIAG
-  bool diag_stepping() const { return legs_ && legs_->stepping(); }  // DIAG
 
  private:
   struct Blocks {  // where the observation's fields it reads start
@@ -41,12 +34,6 @@ class ScriptedBoxingPolicy : public Policy {
   bool planted_ = false;      // both feet down where they stand, punching
   bool was_resting_ = false;  // to see the bell
   double clock_s_ = 0;        // time in range, for the punches' rhythm
-  std::unique_ptr<BoxingPunch> punch_;
-  bool punching_ = false;
-  double hold_s_ = 0;
-  bool set_ = false;  // planted in the hold
-  public: bool diag_set() const { return set_; } private:
-  int count_ = 0;  // punches thrown: even left, odd right
 };
 
 }  // namespace olympics::client
