@@ -27,7 +27,7 @@ class SeedList {
       throw std::invalid_argument(
           "--seeds names " + std::to_string(seeds_.size()) +
           " seeds, too few for the balls or matches asked: name more seeds, or ask for fewer "
-          "(--balls, --episodes, --matches)");
+          "(--balls, --episodes, --matches, --doubles)");
     return seeds_[used_++];
   }
   std::string used() const {
@@ -89,8 +89,10 @@ nlohmann::json ball_return(const std::string& sport, const std::string& policy, 
           {"seconds_played", seconds}};
 }
 
-// Scripted against scripted in the sport's standard short format.
-nlohmann::json singles(const std::string& sport, int matches, const std::string& named_seeds) {
+// Scripted against scripted ("1v1", or "2v2" with every player scripted) in the sport's standard
+// short format.
+nlohmann::json scripted_matches(const std::string& sport, const std::string& mode, int matches,
+                                const std::string& named_seeds) {
   const nlohmann::json format = sport == "table_tennis"
                                     ? nlohmann::json{{"games_to_win", 2}, {"points_per_game", 11}}
                                     : nlohmann::json{{"format", "sets"}, {"sets_to_win", 1}};
@@ -100,8 +102,9 @@ nlohmann::json singles(const std::string& sport, int matches, const std::string&
   nlohmann::json endings = nlohmann::json::object();  // what ended the points, by the call
   double seconds = 0;
   for (int i = 0; i < matches; ++i) {
-    const auto match = play_in_process(sport, {"1v1", seeds.next(), 0.0, format},
-                                       {"scripted", "scripted"}, [&](const sports::SportMatch& m) {
+    const std::vector<std::string> players(mode == "2v2" ? 4 : 2, "scripted");
+    const auto match = play_in_process(sport, {mode, seeds.next(), 0.0, format}, players,
+                                       [&](const sports::SportMatch& m) {
                                          for (const auto& ev : events(m)) {
                                            const std::string call = ev.value("call", "");
                                            if (call == "hit") ++strokes_now;
@@ -153,7 +156,8 @@ nlohmann::json run_racket_bench(const RacketBenchOptions& o) {
     nlohmann::json& r = report["sports"][sport];
     for (const std::string& policy : o.policies)
       r["ball_return"][policy] = ball_return(sport, policy, o.balls, o.episodes, o.seeds);
-    if (o.matches > 0) r["1v1"] = singles(sport, o.matches, o.seeds);
+    if (o.matches > 0) r["1v1"] = scripted_matches(sport, "1v1", o.matches, o.seeds);
+    if (o.doubles > 0) r["2v2"] = scripted_matches(sport, "2v2", o.doubles, o.seeds);
     if (!o.speed) continue;
     core::ModelSpec players = core::load_humanoid(core::HumanoidKind::Smpl);
     sports::equipment::attach_equipment(players, sport == "tennis"
@@ -192,10 +196,11 @@ void print_racket_report(const nlohmann::json& report) {
           b["smplolympics_hits_per_episode"].get<double>(), b["falls"].get<int>(),
           b["falls_per_minute"].get<double>());
     }
-    if (r.contains("1v1")) {
-      const auto& s = r["1v1"];
+    for (const char* mode : {"1v1", "2v2"}) {
+      if (!r.contains(mode)) continue;
+      const auto& s = r[mode];
       const auto& k = s["strokes_per_point"];
-      std::printf("  1v1 scripted x scripted, %d matches %s (seeds %s): ended by score %s\n",
+      std::printf("  %s scripted x scripted, %d matches %s (seeds %s): ended by score %s\n", mode,
                   s["matches"].get<int>(), s["format"].dump().c_str(),
                   s["seeds"].get<std::string>().c_str(), percent(s["ended_by_score"]).c_str());
       std::printf(

@@ -7,6 +7,7 @@
 // - 1v1, scripted against scripted, in the standard short format (table tennis best of 3 games
 //   to 11; tennis one set with a tie-break): strokes per point (median, p90, longest), the share
 //   of matches decided by score rather than the time limit, falls per minute;
+// - 2v2 (--doubles N), the same figures for doubles, every player scripted;
 // - 1v1 ticks/s on one core against the same equipped humanoids stepping with nothing else.
 // Every figure is on seeds no tuning used: the scripted player was tuned on ball-return seeds
 // 1-200, so episodes here start at 100001 unless told otherwise.
@@ -22,6 +23,7 @@ struct RacketBenchOptions {
   int balls = 1000;    // ball return: episodes are played until this many balls were fed
   int episodes = 0;    // ...or exactly this many episodes, when it is set
   int matches = 20;    // 1v1 matches per sport (0: none)
+  int doubles = 0;     // 2v2 matches per sport, every player scripted (0: none)
   std::string seeds;   // first seeds, e.g. "100001-200000" (docs/figures.md); empty: from 100001
   double seconds = 2;  // wall seconds per speed measurement
   int repeats = 3;     // interleaved repeats (median reported)

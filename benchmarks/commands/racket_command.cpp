@@ -1,4 +1,5 @@
-// olympics-bench racket [--json] [--balls N | --episodes N] [--matches M] [--seeds A-B,..]
+// olympics-bench racket [--json] [--balls N | --episodes N] [--matches M] [--doubles D] [--seeds
+// A-B,..]
 // [--policies P,..]
 //                       [--sports S,..] [--seconds S] [--repeats R] [--no-speed]
 #include "bench_command.h"
@@ -17,6 +18,8 @@ BenchCommand racket_command(CLI::App& app) {
   cli.add_option("--episodes", o->episodes, "ball return: this many episodes instead of --balls")
       ->check(CLI::PositiveNumber);
   cli.add_option("--matches", o->matches, "scripted 1v1 matches per sport (0: none)")
+      ->check(CLI::NonNegativeNumber);
+  cli.add_option("--doubles", o->doubles, "scripted 2v2 matches per sport (0: none)")
       ->check(CLI::NonNegativeNumber);
   add_seeds_option(cli, o->seeds, "episode and match (default: 100001 on, unseen by tuning)");
   cli.add_option("--policies", o->policies,

@@ -1,24 +1,27 @@
 #!/bin/bash
-# olympics-bench racket's 1v1 breakdown adds up: every point is counted once in point_endings
-# and once in the strokes histogram; and a --seeds list too short for the request is refused
+# olympics-bench racket's 1v1 and 2v2 breakdowns add up: every point is counted once in
+# point_endings and once in the strokes histogram; and a --seeds list too short for the request is refused
 # with what to do (exit 2), not aborted. Usage: racket_bench_test.sh BIN_DIR
 set -euo pipefail
 bench="$1/olympics-bench"
 out=$(mktemp)
 trap 'rm -f "$out"' EXIT
 
-"$bench" racket --sports table_tennis --episodes 1 --matches 1 --seeds 1-2 --no-speed --json >"$out"
-python3 - "$out" <<'PY'
+"$bench" racket --sports table_tennis --episodes 1 --matches 1 --doubles 1 --seeds 1-3 --no-speed \
+  --json >"$out"
+/usr/bin/python3 - "$out" <<'PY'
 import json, sys
-s = json.load(open(sys.argv[1]))["sports"]["table_tennis"]["1v1"]
-points = s["points"]
-assert points > 0, "no points played"
-endings = s["point_endings"]
-assert sum(endings.values()) == points, f"point_endings {endings} do not add up to {points} points"
-histogram = s["strokes_per_point"]["histogram"]
-assert sum(histogram) == points, f"histogram {histogram} does not add up to {points} points"
-assert len(histogram) == s["strokes_per_point"]["longest"] + 1, "histogram ends at the longest"
-print(f"{points} points: endings {endings}, histogram {histogram}")
+sport = json.load(open(sys.argv[1]))["sports"]["table_tennis"]
+for mode in ("1v1", "2v2"):
+    s = sport[mode]
+    points = s["points"]
+    assert points > 0, f"{mode}: no points played"
+    endings = s["point_endings"]
+    assert sum(endings.values()) == points, f"{mode}: point_endings {endings} != {points} points"
+    histogram = s["strokes_per_point"]["histogram"]
+    assert sum(histogram) == points, f"{mode}: histogram {histogram} != {points} points"
+    assert len(histogram) == s["strokes_per_point"]["longest"] + 1, "histogram ends at the longest"
+    print(f"{mode}: {points} points: endings {endings}, histogram {histogram}")
 PY
 
 set +e
