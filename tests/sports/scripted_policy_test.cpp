@@ -12,6 +12,7 @@
 #include "racket/racket_equipment.h"
 #include "registry.h"
 #include "scripted_racket.h"
+#include "scripted_racket_play.h"
 #include "smpl_observation.h"
 #include "step_controller.h"
 
@@ -149,28 +150,19 @@ TEST(ScriptedRacketPolicy, SidestepsSoTheFeedPassesOnTheRacketSide) {
   int feeds = 0, falls = 0;
   double side_sum = 0;
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
-    auto match = sports::sport_or_throw("table_tennis").create({"1v1", seed, 0.0, {}});
-    const auto layout = ObservationLayout::from_blocks(match->layout().observation);
-    const int kBall = layout.offset("ball_position", "position");
-    const int kComing = layout.offset("rally", "coming");
-    ScriptedRacketPolicy players[2];
-    for (auto& p : players) p.start({"table_tennis", "1v1", core::kControlDt, layout, 69});
-    std::vector<float> obs[2] = {std::vector<float>(match->obs_size()),
-                                 std::vector<float>(match->obs_size())};
-    std::vector<float> act[2] = {std::vector<float>(69), std::vector<float>(69)};
+    ScriptedRacketPlay play("table_tennis", {"1v1", seed, 0.0, {}});
+    const int kBall = play.layout.offset("ball_position", "position");
+    const int kComing = play.layout.offset("rally", "coming");
     bool seen = false, point_over = false;
-    while (!match->outcome().match_over && !point_over) {
-      for (int s = 0; s < 2; ++s) {
-        match->observe(s, obs[s]);
-        const float* ball = &obs[s][kBall];  // heading frame of this player's root
-        if (!seen && obs[s][kComing] > 0.5f && ball[0] < 0.45f) {
+    while (!play.over() && !point_over) {
+      const auto events = play.tick([&](int s) {
+        const float* ball = &play.obs[s][kBall];  // heading frame of this player's root
+        if (!seen && play.obs[s][kComing] > 0.5f && ball[0] < 0.45f) {
           seen = true, ++feeds;
           side_sum += ball[1];
         }
-        players[s].act(obs[s], act[s]);
-      }
-      match->step({std::span<const float>(act[0]), std::span<const float>(act[1])});
-      for (const auto& ev : match->outcome().info.value("events", nlohmann::json::array())) {
+      });
+      for (const auto& ev : events) {
         const std::string call = ev.value("call", "");
         if (call == "fall") ++falls;
         if (call == "point") point_over = true;
@@ -195,27 +187,17 @@ TEST(ScriptedRacketPolicy, SidestepsSoTheFeedPassesOnTheRacketSide) {
 TEST(ScriptedRacketPolicy, HoldsTheRacketOffTheBodyLineWhileStepping) {
   int ticks = 0, near_axis = 0;
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
-    auto match = sports::sport_or_throw("table_tennis").create({"1v1", seed, 0.0, {}});
-    const auto layout = ObservationLayout::from_blocks(match->layout().observation);
-    ScriptedRacketPolicy players[2];
-    for (auto& p : players) p.start({"table_tennis", "1v1", core::kControlDt, layout, 69});
-    std::vector<float> obs[2] = {std::vector<float>(match->obs_size()),
-                                 std::vector<float>(match->obs_size())};
-    std::vector<float> act[2] = {std::vector<float>(69), std::vector<float>(69)};
+    ScriptedRacketPlay play("table_tennis", {"1v1", seed, 0.0, {}});
     int points = 0;
-    while (!match->outcome().match_over && points < 2) {
-      for (int s = 0; s < 2; ++s) {
-        match->observe(s, obs[s]);
-        players[s].act(obs[s], act[s]);
-        const auto& stroke = players[s].stroke();
+    while (!play.over() && points < 2) {
+      const auto events = play.tick([&](int s) {
+        const auto& stroke = play.players[s].stroke();
         if (stroke && stroke->time_to_hit > 0.6) {
           ++ticks;
-          near_axis += smpl::body_position(obs[s], smpl::kRHand).head<2>().norm() < 0.25;
+          near_axis += smpl::body_position(play.obs[s], smpl::kRHand).head<2>().norm() < 0.25;
         }
-      }
-      match->step({std::span<const float>(act[0]), std::span<const float>(act[1])});
-      for (const auto& ev : match->outcome().info.value("events", nlohmann::json::array()))
-        points += ev.value("call", "") == "point";
+      });
+      for (const auto& ev : events) points += ev.value("call", "") == "point";
     }
   }
   std::printf("ticks stepping to a planned stroke %d, racket hand near the body's axis %d\n", ticks,
@@ -226,21 +208,11 @@ TEST(ScriptedRacketPolicy, HoldsTheRacketOffTheBodyLineWhileStepping) {
 
 // Two scripted table-tennis players finish a game to 11 by score, with rallies in it.
 TEST(ScriptedRacketPolicy, OneVsOneEndsByScoreWithRallies) {
-  auto match = sports::sport_or_throw("table_tennis").create({"1v1", 1, 0.0, {}});
-  const auto layout = ObservationLayout::from_blocks(match->layout().observation);
-  ScriptedRacketPolicy players[2];
-  for (auto& p : players) p.start({"table_tennis", "1v1", core::kControlDt, layout, 69});
-  std::vector<float> obs[2] = {std::vector<float>(match->obs_size()),
-                               std::vector<float>(match->obs_size())};
-  std::vector<float> act[2] = {std::vector<float>(69), std::vector<float>(69)};
+  ScriptedRacketPlay play("table_tennis", {"1v1", 1, 0.0, {}});
+  const auto& match = play.match;
   int strokes = 0, rallies = 0;  // rallies: points with strokes by both sides
-  while (!match->outcome().match_over) {
-    for (int s = 0; s < 2; ++s) {
-      match->observe(s, obs[s]);
-      players[s].act(obs[s], act[s]);
-    }
-    match->step({std::span<const float>(act[0]), std::span<const float>(act[1])});
-    for (const auto& ev : match->outcome().info.value("events", nlohmann::json::array())) {
+  while (!play.over()) {
+    for (const auto& ev : play.tick()) {
       const std::string call = ev.value("call", "");
       if (call == "hit") ++strokes;
       if (call == "point") rallies += strokes >= 2, strokes = 0;

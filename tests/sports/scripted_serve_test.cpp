@@ -10,6 +10,7 @@
 #include "core/control_rate.h"
 #include "registry.h"
 #include "scripted_racket.h"
+#include "scripted_racket_play.h"
 
 namespace olympics::client {
 namespace {
@@ -24,22 +25,10 @@ struct ServeTally {
 // `tally`.
 void first_serve(const std::string& sport, std::uint64_t seed, ServeTally& tally,
                  const std::string& mode = "1v1") {
-  auto match = sports::sport_or_throw(sport).create({mode, seed, 20.0, {{"start", "serve"}}});
-  const auto layout = ObservationLayout::from_blocks(match->layout().observation);
-  const int n = match->slot_count();
-  std::vector<ScriptedRacketPolicy> players(n);
-  for (auto& p : players) p.start({sport, mode, core::kControlDt, layout, 69});
-  std::vector<std::vector<float>> obs(n, std::vector<float>(match->obs_size())),
-      act(n, std::vector<float>(69));
-  std::vector<std::span<const float>> acts(act.begin(), act.end());
+  ScriptedRacketPlay play(sport, {mode, seed, 20.0, {{"start", "serve"}}});
   ++tally.serves;
-  while (!match->outcome().match_over) {
-    for (int s = 0; s < n; ++s) {
-      match->observe(s, obs[s]);
-      players[s].act(obs[s], act[s]);
-    }
-    match->step(acts);
-    for (const auto& ev : match->outcome().info.value("events", nlohmann::json::array())) {
+  while (!play.over()) {
+    for (const auto& ev : play.tick()) {
       const std::string call = ev.value("call", "");
       if (call == "serve_in") return void(++tally.legal);
       if (call == "fault") return void(++tally.faults);
@@ -77,22 +66,12 @@ TEST(ScriptedRacketServe, TennisServesAreCalled) {
 }
 
 TEST(ScriptedRacketServe, OneVsOneWithServesPlaysPoints) {
-  auto match = sports::sport_or_throw("table_tennis")
-                   .create({"1v1", 1, 120.0, {{"start", "serve"}, {"points_per_game", 5}}});
-  const auto layout = ObservationLayout::from_blocks(match->layout().observation);
-  ScriptedRacketPolicy players[2];
-  for (auto& p : players) p.start({"table_tennis", "1v1", core::kControlDt, layout, 69});
-  std::vector<float> obs[2] = {std::vector<float>(match->obs_size()),
-                               std::vector<float>(match->obs_size())};
-  std::vector<float> act[2] = {std::vector<float>(69), std::vector<float>(69)};
+  ScriptedRacketPlay play("table_tennis",
+                          {"1v1", 1, 120.0, {{"start", "serve"}, {"points_per_game", 5}}});
+  const auto& match = play.match;
   int points = 0, tosses = 0, good_serve_points = 0, hits = 0;
-  while (!match->outcome().match_over) {
-    for (int s = 0; s < 2; ++s) {
-      match->observe(s, obs[s]);
-      players[s].act(obs[s], act[s]);
-    }
-    match->step({std::span<const float>(act[0]), std::span<const float>(act[1])});
-    for (const auto& ev : match->outcome().info.value("events", nlohmann::json::array())) {
+  while (!play.over()) {
+    for (const auto& ev : play.tick()) {
       const std::string call = ev.value("call", "");
       tosses += call == "toss";
       hits += call == "hit";
