@@ -1,14 +1,14 @@
 #!/bin/bash
 # olympics-bench racket's 1v1 and 2v2 breakdowns add up: every point is counted once in
-# point_endings and once in the strokes histogram; and a --seeds list too short for the request is refused
+# point_endings and once in the strokes histogram; the serve row's calls add up to its serves; and a --seeds list too short for the request is refused
 # with what to do (exit 2), not aborted. Usage: racket_bench_test.sh BIN_DIR
 set -euo pipefail
 bench="$1/olympics-bench"
 out=$(mktemp)
 trap 'rm -f "$out"' EXIT
 
-"$bench" racket --sports table_tennis --episodes 1 --matches 1 --doubles 1 --seeds 1-3 --no-speed \
-  --json >"$out"
+"$bench" racket --sports table_tennis --episodes 1 --matches 1 --doubles 1 --serves 2 --seeds 1-3 \
+  --no-speed --json >"$out"
 /usr/bin/python3 - "$out" <<'PY'
 import json, sys
 sport = json.load(open(sys.argv[1]))["sports"]["table_tennis"]
@@ -22,6 +22,11 @@ for mode in ("1v1", "2v2"):
     assert sum(histogram) == points, f"{mode}: histogram {histogram} != {points} points"
     assert len(histogram) == s["strokes_per_point"]["longest"] + 1, "histogram ends at the longest"
     print(f"{mode}: {points} points: endings {endings}, histogram {histogram}")
+serve = sport["serve"]
+assert serve["serves"] == 2, serve
+called = serve["in"]["count"] + serve["faults"] + serve["lets"] + serve["other"]
+assert called == 2, f"serves in, faults, lets and other {serve} do not add up to 2"
+print(f"serves: {serve}")
 PY
 
 set +e

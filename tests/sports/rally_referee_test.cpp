@@ -154,6 +154,8 @@ TEST(RallyReferee, TennisServeInTheDiagonalBoxStartsTheRally) {
   EXPECT_FALSE(r.call());
   EXPECT_EQ(r.replay(), RallyReferee::Replay::None);
   EXPECT_FALSE(r.serving());
+  ASSERT_FALSE(r.events().empty());
+  EXPECT_EQ(r.events().back().value("call", ""), "serve_in");  // what the bench counts
   EXPECT_EQ(r.bounces(), 1);
   r.racket_hit(1, 1.5);  // returned after the bounce
   EXPECT_FALSE(r.call());
