@@ -322,7 +322,8 @@ void RacketMatch::settle_tick() {
     set_reward(i, racket_reward_terms(in));
   }
 
-  // A fall loses the point; when both sides fall on the same tick the point is played again.
+  // A fall loses the point, even on the tick of a serve's fault or let (the ball was in play when
+  // the player fell); when both sides fall on the same tick the point is played again.
   int fallen_slot[2] = {-1, -1};
   for (int i = 0; i < slot_count(); ++i)
     if (down(i)) fallen_slot[teams()[i]] = i;

@@ -79,6 +79,11 @@ void RallyReferee::lose(int team, int culprit, const std::string& reason) {
   events_.push_back(std::move(e));
 }
 
+void RallyReferee::concede(int team, int culprit, const std::string& reason) {
+  replay_ = Replay::None;
+  lose(team, culprit, reason);
+}
+
 void RallyReferee::racket_hit(int slot, double time) {
   if (decided()) return;
   const int team = teams_[slot];

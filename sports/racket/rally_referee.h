@@ -69,8 +69,10 @@ class RallyReferee {
   void racket_hit(int slot, double time);
   void surface_contact(ArenaSurface surface, const Eigen::Vector3d& where, double time);
   void body_touch(int slot, double time);
-  // `team` loses the point for a reason found outside the ball's touches (a fall).
-  void concede(int team, int culprit, const std::string& reason) { lose(team, culprit, reason); }
+  // `team` loses the point for a reason found outside the ball's touches (a fall). It overrules
+  // a fault or a let called since the last toss (the match concedes a tick's falls before it
+  // tosses again): the ball was in play when the player fell.
+  void concede(int team, int culprit, const std::string& reason);
   // No stroke and no decision for this long: the team that had to play the ball loses
   // ("stalled"), e.g. a ball stuck where nobody reaches it.
   void check_stall(double time, double max_rally_s);

@@ -222,6 +222,31 @@ TEST(RallyReferee, TennisNetCordServeInIsALetAndAMissedTossAFault) {
   EXPECT_EQ(r.call()->winner_team, 0);
 }
 
+// A fall on the tick of a first fault or a let still loses the point (the match concedes the
+// tick's falls before it tosses again): the ball was in play when the player fell.
+TEST(RallyReferee, AFallOnTheTickOfAFaultOrALetLosesThePoint) {
+  auto r = tennis_singles();
+  r.start_serve(0, tennis_serve(false), 0);
+  r.racket_hit(0, 0.5);
+  r.surface_contact(kGround, Eigen::Vector3d(8, 2, 0), 1.2);  // long: a first fault
+  ASSERT_EQ(r.replay(), RallyReferee::Replay::Fault);
+  r.concede(1, 1, "fall");  // the receiver fell on that tick
+  ASSERT_TRUE(r.call());
+  EXPECT_EQ(r.call()->reason, "fall");
+  EXPECT_EQ(r.call()->winner_team, 0);
+  EXPECT_EQ(r.call()->culprit_slot, 1);
+  EXPECT_EQ(r.replay(), RallyReferee::Replay::None);
+
+  r.start_serve(0, tennis_serve(true), 2);  // a net-cord let, and the server fell
+  r.racket_hit(0, 2.5);
+  r.surface_contact(kNet, Eigen::Vector3d(0, 1, 0.99), 2.9);
+  r.surface_contact(kGround, Eigen::Vector3d(3, 1, 0), 3.1);
+  ASSERT_EQ(r.replay(), RallyReferee::Replay::Let);
+  r.concede(0, 0, "fall");
+  ASSERT_TRUE(r.call());
+  EXPECT_EQ(r.call()->winner_team, 1);
+}
+
 TEST(RallyReferee, TableTennisServeMustBounceOnTheServersCourtFirst) {
   RallyReferee r(table_tennis_game(), {0, 1}, false, false);
   ServeRule rule;  // singles: anywhere on each court
