@@ -327,11 +327,18 @@ void RacketMatch::settle_tick() {
   int fallen_slot[2] = {-1, -1};
   for (int i = 0; i < slot_count(); ++i)
     if (down(i)) fallen_slot[teams()[i]] = i;
-  if (scoreboard_ && fallen_slot[0] >= 0 && fallen_slot[1] >= 0 && !referee_.call()) {
+  const bool both_fell =
+      scoreboard_ && fallen_slot[0] >= 0 && fallen_slot[1] >= 0 && !referee_.call();
+  if (both_fell && !config_.serve) {
+    // The feed's let feeds the next ball as a new point (kept so: the default start's matches
+    // stay bit-identical).
     nlohmann::json let = referee_event("let", time());
     let["reason"] = "both sides fell";
     log(std::move(let));
     start_point();
+  } else if (both_fell) {
+    referee_.let("both sides fell", time());  // the same server tosses again, below
+    faults_ = 0;  // the whole point is replayed, from the first serve (ITF rule 23, case 1)
   } else {
     for (int team = 0; team < 2; ++team)
       if (fallen_slot[team] >= 0) referee_.concede(team, fallen_slot[team], "fall");

@@ -84,6 +84,13 @@ void RallyReferee::concede(int team, int culprit, const std::string& reason) {
   lose(team, culprit, reason);
 }
 
+void RallyReferee::let(const std::string& reason, double time) {
+  if (call_) return;
+  event("let", time);
+  events_.back()["reason"] = reason;
+  replay_ = Replay::Let;
+}
+
 void RallyReferee::racket_hit(int slot, double time) {
   if (decided()) return;
   const int team = teams_[slot];

@@ -73,6 +73,9 @@ class RallyReferee {
   // a fault or a let called since the last toss (the match concedes a tick's falls before it
   // tosses again): the ball was in play when the player fell.
   void concede(int team, int culprit, const std::string& reason);
+  // The point is to be played again (both sides fell at once): a let, even over a fault called
+  // since the last toss; replay() tells the match to toss again.
+  void let(const std::string& reason, double time);
   // No stroke and no decision for this long: the team that had to play the ball loses
   // ("stalled"), e.g. a ball stuck where nobody reaches it.
   void check_stall(double time, double max_rally_s);

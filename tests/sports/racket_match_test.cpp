@@ -128,6 +128,33 @@ TEST(RacketSports, ServedPointsAreTossedAndUnstruckTossesAreFaults) {
   EXPECT_THROW(make("tennis", "1v1", 1, {{"start", "volley"}}), std::invalid_argument);
 }
 
+// `start: "serve"`, 2v2: all four players fall on the same tick (a pose none can stand in).
+// The let replays the same point: the same partner serves again (not the next point's server),
+// and no point is called.
+TEST(RacketSports, ServedBothSidesFellLetKeepsTheServer) {
+  for (const auto& [name, a] : {std::pair{"tennis", 0.3f}, std::pair{"table_tennis", 1.0f}}) {
+    auto m = make(name, "2v2", 1, {{"start", "serve"}});
+    std::vector<float> pose(69, a);
+    std::vector<std::span<const float>> acts(m->slot_count(), pose);
+    std::vector<std::string> calls;
+    std::vector<int> tossed_to;
+    for (int t = 0; t < 30 * 2 && tossed_to.size() < 3; ++t) {
+      m->step(acts);
+      for (const auto& ev : m->outcome().info.value("events", nlohmann::json::array())) {
+        if (ev.at("call") == "fall") continue;
+        calls.push_back(ev.at("call"));
+        if (ev.at("call") == "toss") tossed_to.push_back(ev.at("slot"));
+        if (ev.at("call") == "let") {
+          EXPECT_EQ(ev.at("reason"), "both sides fell") << name;
+        }
+      }
+    }
+    ASSERT_EQ(tossed_to.size(), 3u) << name;
+    EXPECT_EQ(calls, (std::vector<std::string>{"toss", "let", "toss", "let", "toss"})) << name;
+    EXPECT_EQ(tossed_to, std::vector<int>(3, tossed_to.front())) << name;
+  }
+}
+
 // The default feed is untouched by the serve: the same seed plays the same match with `start`
 // given as its default.
 TEST(RacketSports, FeedIsTheDefaultStart) {

@@ -247,6 +247,18 @@ TEST(RallyReferee, AFallOnTheTickOfAFaultOrALetLosesThePoint) {
   EXPECT_EQ(r.call()->winner_team, 1);
 }
 
+// Both sides fallen on the tick of a fault: a let, the point played again.
+TEST(RallyReferee, BothSidesFallenOnTheTickOfAFaultIsALet) {
+  auto r = tennis_singles();
+  r.start_serve(0, tennis_serve(false), 4);
+  r.surface_contact(kGround, Eigen::Vector3d(-11.3, -1, 0), 5);
+  r.let("both sides fell", 5);
+  EXPECT_FALSE(r.call());
+  EXPECT_EQ(r.replay(), RallyReferee::Replay::Let);
+  EXPECT_EQ(r.events().back()["call"], "let");
+  EXPECT_EQ(r.events().back()["reason"], "both sides fell");
+}
+
 TEST(RallyReferee, TableTennisServeMustBounceOnTheServersCourtFirst) {
   RallyReferee r(table_tennis_game(), {0, 1}, false, false);
   ServeRule rule;  // singles: anywhere on each court
