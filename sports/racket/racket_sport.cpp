@@ -68,6 +68,11 @@ RacketMatchConfig RacketSport::config(const std::string& mode,
   c.max_rally_s = s.at("max_rally_s").get<double>();
   c.feed_to_player = s.at("feed") == "to_player";
   c.serve = s.at("start") == "serve";
+  if (c.serve && c.mode == RacketMode::BallReturn)
+    throw std::invalid_argument(
+        name() +
+        " ball_return: start \"serve\" needs a scoreboard and a server; ball_return "
+        "feeds every ball. Use mode 1v1 or 2v2 to serve, or drop the start setting");
   if (table_tennis_) {
     c.game = table_tennis_game();
     c.table_tennis.games_to_win = s.at("games_to_win");

@@ -126,6 +126,13 @@ TEST(RacketSports, ServedPointsAreTossedAndUnstruckTossesAreFaults) {
     EXPECT_EQ(first_point.at("reason"), tennis ? "double_fault" : "fault");
   }
   EXPECT_THROW(make("tennis", "1v1", 1, {{"start", "volley"}}), std::invalid_argument);
+  // Ball return feeds every ball: a serve there is refused, saying which modes serve.
+  try {
+    make("table_tennis", "ball_return", 1, {{"start", "serve"}});
+    ADD_FAILURE() << "start: serve in ball_return was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("Use mode 1v1 or 2v2"), std::string::npos) << e.what();
+  }
 }
 
 // `start: "serve"`, 2v2: all four players fall on the same tick (a pose none can stand in).
