@@ -120,17 +120,10 @@ TEST(ScriptedRacketPolicy, MovesTowardTheComingBall) {
 TEST(ScriptedRacketPolicy, ReturnsFedBallsOntoTheOtherHalf) {
   int returned = 0;
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
-    auto match = sports::sport_or_throw("table_tennis").create({"ball_return", seed, 10.0, {}});
-    const auto layout = ObservationLayout::from_blocks(match->layout().observation);
-    ScriptedRacketPolicy policy;
-    policy.start({"table_tennis", "ball_return", core::kControlDt, layout, 69});
-    std::vector<float> obs(match->obs_size()), act(69);
+    ScriptedRacketPlay play("table_tennis", {"ball_return", seed, 10.0, {}});
     bool first_ball_over = false;
-    while (!match->outcome().match_over && !first_ball_over) {
-      match->observe(0, obs);
-      policy.act(obs, act);
-      match->step({std::span<const float>(act)});
-      for (const auto& ev : match->outcome().info.value("events", nlohmann::json::array())) {
+    while (!play.over() && !first_ball_over) {
+      for (const auto& ev : play.tick()) {
         const std::string call = ev.value("call", "");
         if (call == "return_in") ++returned;
         if (call == "return_in" || call == "point") first_ball_over = true;

@@ -9,6 +9,7 @@
 #include "core/control_rate.h"
 #include "registry.h"
 #include "scripted_racket.h"
+#include "scripted_racket_play.h"
 
 namespace olympics::client {
 namespace {
@@ -36,17 +37,10 @@ TEST(ScriptedTennisSwing, TurnsFromRestToTheContactRateAtContact) {
 TEST(ScriptedTennisSwing, TouchesFirstBallsItCanReach) {
   int touched = 0;
   for (std::uint64_t seed : {3, 11, 12, 21, 32, 77, 87, 90, 97, 99, 100}) {
-    auto match = sports::sport_or_throw("tennis").create({"ball_return", seed, 10.0, {}});
-    const auto layout = ObservationLayout::from_blocks(match->layout().observation);
-    ScriptedRacketPolicy policy;
-    policy.start({"tennis", "ball_return", core::kControlDt, layout, 69});
-    std::vector<float> obs(match->obs_size()), act(69);
+    ScriptedRacketPlay play("tennis", {"ball_return", seed, 10.0, {}});
     bool over = false, touch = false;
-    while (!match->outcome().match_over && !over) {
-      match->observe(0, obs);
-      policy.act(obs, act);
-      match->step({std::span<const float>(act)});
-      for (const auto& ev : match->outcome().info.value("events", nlohmann::json::array())) {
+    while (!play.over() && !over) {
+      for (const auto& ev : play.tick()) {
         const std::string call = ev.value("call", "");
         if (call == "hit") touch = true;
         if (call == "return_in" || call == "point") over = true;
