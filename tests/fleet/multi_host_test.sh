@@ -147,13 +147,13 @@ start_cell() {
     > "$work/$h.log" 2>&1 &
   echo $! > "$work/$h.pid"
 }
-started=$(date +%s)
-start_cell cell1 --server-capacity 3  # room for the learner's match beside the league's two
-start_cell cell2
-start_cell cell3
-
+# The learner and the one-host league start before the cells: the tournament's 1-s games end in
+# well under a minute once the cells run, so everything slow (Python's imports, a second league)
+# comes first and the probes for fault 1 start as the cells do (they raced the whole tournament
+# under load before, and once missed it).
 # The learner's host: a trainer's vector env (one tennis match) on cell1 through olympics-relay,
-# stepping all along; it must keep stepping while cell2 dies and cell3 is cut off.
+# stepping all along; it must keep stepping while cell2 dies and cell3 is cut off. It waits up to
+# 120 s for cell1's server, which starts with cell1 below.
 pypath=$(cd "$bin/../python" 2>/dev/null && pwd || true)
 learner=no
 if [ -n "$pypath" ] && PYTHONPATH=$pypath $python -c "import smpl_olympics._client" 2>/dev/null; then
@@ -170,7 +170,7 @@ import numpy as np
 from smpl_olympics.vector_env import OlympicsVectorEnv
 out, secret = sys.argv[1], sys.argv[2]
 env = OlympicsVectorEnv(1, sport="tennis", mode="1v1", seed=7, time_limit_s=600,
-                        secret_file=secret, server_id="cell1",
+                        secret_file=secret, server_id="cell1", connect_timeout_s=120,
                         lcm_url="udpm://239.255.76.67:7667?ttl=0")  # the relay's side
 env.reset()
 actions = np.zeros(env.action_space.shape, np.float32)
@@ -194,6 +194,11 @@ in_ns solo "$bin/olympics-league" run --db "$work/one.db" --name one --entrants 
   --time-limit "$time_limit" --parallel 2 --secret "$work/secret" --log-dir "$work" --quiet \
   > "$work/one.log" 2>&1 &
 solo_league=$!
+
+started=$(date +%s)
+start_cell cell1 --server-capacity 3  # room for the learner's match beside the league's two
+start_cell cell2
+start_cell cell3
 
 holds_game() {  # the cell has stored a game and holds one now
   [ "$(sql "SELECT count(*) FROM fleet_results WHERE tournament = '$name' AND cell = '$1'")" -ge 1 ] &&
