@@ -178,8 +178,7 @@ void RacketMatch::start_point() {
   if (scoreboard_) {
     for (int i = 0; i < slot_count(); ++i) reset_player(i, start_placement(i));
     receiving_team = scoreboard_->server();
-    // In doubles the partners take the feed in turn.
-    const int member = doubles ? served_points_ % 2 : 0;
+    const int member = doubles ? doubles_member(receiving_team) : 0;
     for (int i = 0; i < slot_count(); ++i)
       if (teams()[i] == receiving_team && member_index(teams(), i) == member) fed_slot = i;
     ++served_points_;
@@ -207,6 +206,19 @@ void RacketMatch::start_point() {
             : feed_launch(config_.game, receiving_team, receiver_y >= 0 ? 1 : -1, doubles, rng());
   }
   flight_.set_state(launch.position, launch.velocity);
+}
+
+int RacketMatch::doubles_member(int team) {
+  // The feed: the partners take it in turn, point by point.
+  if (!config_.serve) return served_points_ % 2;
+  // The serve: one partner keeps it for the team's whole turn (tennis: a game, a tie-break's
+  // first point then two at a time; table tennis: two points, one from 10-10) and the partners
+  // take the turns in order, so the four serve A1, B1, A2, B2 (ITF rule 14; ITTF 2.14.1-2.14.2).
+  if (team != serving_team_) {
+    serving_team_ = team;
+    ++service_turns_[team];
+  }
+  return (service_turns_[team] - 1) % 2;
 }
 
 int RacketMatch::receiver_y_sign() const {

@@ -13,6 +13,7 @@
 // the time limit ends it (then the leader wins).
 #pragma once
 
+#include <array>
 #include <memory>
 #include <random>
 
@@ -63,6 +64,7 @@ class RacketMatch : public SmplMatch {
 
   void start_point();
   void toss();  // `start: "serve"`: a ball tossed for the server (again after a fault or a let)
+  int doubles_member(int team);  // which partner of `team` takes this point's ball
   int receiver_y_sign() const;
   void handle_contact(const equipment::BallContact& c, double t);
   void probe_bodies(const Eigen::Vector3d& from, double t);
@@ -85,8 +87,10 @@ class RacketMatch : public SmplMatch {
   std::vector<Eigen::Vector3d> reaction_;  // per slot: impulse on the hand for the next step
   std::vector<Eigen::Vector3d> reaction_at_;
   int served_points_ = 0;
-  int server_slot_ = -1;  // `start: "serve"`: who serves this point
-  int faults_ = 0;        // ...and its faults so far
+  int serving_team_ = -1;               // `start: "serve"`: the team whose service turn this is
+  std::array<int, 2> service_turns_{};  // ...and how many turns each team has begun
+  int server_slot_ = -1;                // `start: "serve"`: who serves this point
+  int faults_ = 0;                      // ...and its faults so far
   size_t referee_events_seen_ = 0;
   nlohmann::json points_ = nlohmann::json::array();  // every finished point, for the result
 };

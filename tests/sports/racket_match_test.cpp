@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
 #include "core/humanoid_assets.h"
 #include "racket/racket_equipment.h"
@@ -159,6 +160,43 @@ TEST(RacketSports, ServedBothSidesFellLetKeepsTheServer) {
     ASSERT_EQ(tossed_to.size(), 3u) << name;
     EXPECT_EQ(calls, (std::vector<std::string>{"toss", "let", "toss", "let", "toss"})) << name;
     EXPECT_EQ(tossed_to, std::vector<int>(3, tossed_to.front())) << name;
+  }
+}
+
+// `start: "serve"`, 2v2, nobody swinging: every serve is lost, so the serve changes hands by the
+// rules alone. One partner serves the team's whole turn (tennis: a game of four points; table
+// tennis: two points) and the four players serve in the order A1, B1, A2, B2 (ITF rule 14; ITTF
+// 2.14): four turns by four different players, the teams alternating.
+TEST(RacketSports, DoublesPartnersServeWholeTurnsInRotation) {
+  for (const auto& [name, turn_points] : {std::pair{"tennis", 4}, std::pair{"table_tennis", 2}}) {
+    auto m = make(name, "2v2", 3, {{"start", "serve"}});
+    std::vector<float> zero(69, 0.0f);
+    std::vector<std::span<const float>> acts(m->slot_count(), zero);
+    std::vector<int> server_of_point, loser_of_point;  // slot that tossed; team that lost
+    int tossed = -1;
+    for (int t = 0; t < 30 * 60 && server_of_point.size() < 4u * turn_points; ++t) {
+      m->step(acts);
+      for (const auto& ev : m->outcome().info.value("events", nlohmann::json::array())) {
+        if (ev.at("call") == "toss") tossed = ev.at("slot");
+        if (ev.at("call") != "point") continue;
+        server_of_point.push_back(tossed);
+        loser_of_point.push_back(1 - ev.at("winner_team").get<int>());
+      }
+    }
+    ASSERT_EQ(server_of_point.size(), 4u * turn_points) << name;
+    std::set<int> turn_servers;
+    for (int turn = 0; turn < 4; ++turn) {
+      const int first = turn * turn_points;
+      for (int p = first; p < first + turn_points; ++p) {
+        EXPECT_EQ(server_of_point[p], server_of_point[first]) << name << " point " << p;
+        EXPECT_EQ(loser_of_point[p], loser_of_point[first]) << name << " point " << p;
+      }
+      if (turn > 0) {
+        EXPECT_NE(loser_of_point[first], loser_of_point[first - 1]) << name << " turn " << turn;
+      }
+      turn_servers.insert(server_of_point[first]);
+    }
+    EXPECT_EQ(turn_servers.size(), 4u) << name << ": the four turns' servers";
   }
 }
 
