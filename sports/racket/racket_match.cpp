@@ -299,7 +299,7 @@ void RacketMatch::handle_contact(const equipment::BallContact& c, double t) {
   reaction_[slot] -= impulse;
   reaction_at_[slot] = c.centre - c.normal * config_.game.ball.radius;
   const size_t before = referee_.events().size();
-  referee_.racket_hit(slot, t);
+  referee_.racket_hit(slot, t, c.centre);
   if (referee_.events().size() == before) return;  // the same stroke, still on the strings
   if (referee_.call() || referee_.last_hitter() != slot) return;
   struck_[slot] = 1;

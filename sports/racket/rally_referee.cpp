@@ -51,6 +51,11 @@ void RallyReferee::fault(const std::string& detail, double time) {
   replay_ = Replay::Fault;
 }
 
+bool RallyReferee::behind_end_line(int team, const Eigen::Vector3d& ball) const {
+  return ball.x() * RacketGame::side_sign(team) > game_.half_length &&
+         ball.z() > game_.surface_height;
+}
+
 bool RallyReferee::in_service_area(int team, const Eigen::Vector3d& where, int y_sign) const {
   if (!game_.in_half(team, where.x(), where.y(), doubles_)) return false;
   const double r = game_.ball.radius;  // a ball touching a line is in
@@ -91,7 +96,7 @@ void RallyReferee::let(const std::string& reason, double time) {
   replay_ = Replay::Let;
 }
 
-void RallyReferee::racket_hit(int slot, double time) {
+void RallyReferee::racket_hit(int slot, double time, const Eigen::Vector3d& ball) {
   if (decided()) return;
   const int team = teams_[slot];
   if (slot == last_hitter_ && time - last_hit_time_ < kSameStrokeS) {
@@ -103,6 +108,7 @@ void RallyReferee::racket_hit(int slot, double time) {
   ++strokes_;
   if (phase_ == Phase::Toss) {
     if (slot != rule_.server_slot) return lose(team, slot, "wrong_hitter");
+    if (game_.on_table && !behind_end_line(team, ball)) return fault("struck_over_table", time);
     phase_ = Phase::Served;
   } else {
     if (team == striker_) return lose(team, slot, "double_hit");

@@ -65,8 +65,10 @@ class RallyReferee {
   Replay replay() const { return replay_; }
   bool serving() const { return phase_ != Phase::Rally; }  // the serve has not landed in yet
 
-  // The ball touched something at `time` (seconds since the match began).
-  void racket_hit(int slot, double time);
+  // The ball touched something at `time` (seconds since the match began); `ball` is its centre.
+  // A table-tennis serve must be struck behind the server's end line and above the table's
+  // surface (ITTF 2.6.4): a fault otherwise ("struck_over_table").
+  void racket_hit(int slot, double time, const Eigen::Vector3d& ball);
   void surface_contact(ArenaSurface surface, const Eigen::Vector3d& where, double time);
   void body_touch(int slot, double time);
   // `team` loses the point for a reason found outside the ball's touches (a fall). It overrules
@@ -98,6 +100,7 @@ class RallyReferee {
   void bounce(ArenaSurface surface, const Eigen::Vector3d& where, double time);
   void serve_bounce(ArenaSurface surface, const Eigen::Vector3d& where, double time);
   bool in_service_area(int team, const Eigen::Vector3d& where, int y_sign) const;
+  bool behind_end_line(int team, const Eigen::Vector3d& ball) const;  // table tennis serve
   void fault(const std::string& detail, double time);
   bool decided() const { return call_ || replay_ != Replay::None; }
   void lose(int team, int culprit, const std::string& reason);

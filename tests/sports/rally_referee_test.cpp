@@ -7,6 +7,9 @@ namespace olympics::sports::racket {
 namespace {
 
 const Eigen::Vector3d kTeam0Court(-6, 1, 0), kTeam1Court(6, -1, 0), kWide(6, 5, 0);
+// Where the racket meets the ball when the call does not depend on it: 1 m up behind team 0's
+// end line (table tennis, 1.37 m; a table-tennis serve must be struck there, ITTF 2.6.4).
+const Eigen::Vector3d kBehindTeam0sEnd(-1.6, 0, 1.0);
 
 RallyReferee tennis_singles() { return RallyReferee(tennis_game(1.0), {0, 1}, false, false); }
 
@@ -25,7 +28,7 @@ TEST(RallyReferee, ReturnOutOrShortLosesForTheStriker) {
   auto r = tennis_singles();
   r.start_point(1, 1, 0);
   r.surface_contact(kGround, kTeam1Court, 0.5);
-  r.racket_hit(1, 0.8);
+  r.racket_hit(1, 0.8, kBehindTeam0sEnd);
   EXPECT_EQ(r.striker_team(), 1);
   r.surface_contact(kGround, Eigen::Vector3d(-13, 0, 0), 1.5);  // past team 0's baseline
   ASSERT_TRUE(r.call());
@@ -35,7 +38,7 @@ TEST(RallyReferee, ReturnOutOrShortLosesForTheStriker) {
 
   r.start_point(1, 1, 2);
   r.surface_contact(kGround, kTeam1Court, 2.5);
-  r.racket_hit(1, 2.8);
+  r.racket_hit(1, 2.8, kBehindTeam0sEnd);
   r.surface_contact(kNet, Eigen::Vector3d(0, 0, 0.9), 3.0);
   r.surface_contact(kGround, Eigen::Vector3d(1, 0, 0), 3.2);  // fell back on its own side
   ASSERT_TRUE(r.call());
@@ -46,12 +49,12 @@ TEST(RallyReferee, NetCordThatFallsInIsGoodAndVolleysAreAllowedInTennis) {
   auto r = tennis_singles();
   r.start_point(0, 0, 0);
   r.surface_contact(kGround, kTeam0Court, 0.3);
-  r.racket_hit(0, 0.6);
+  r.racket_hit(0, 0.6, kBehindTeam0sEnd);
   r.surface_contact(kNet, Eigen::Vector3d(0, 0, 0.98), 0.9);
   r.surface_contact(kGround, Eigen::Vector3d(1, 0, 0), 1.1);
   EXPECT_FALSE(r.call());
-  r.racket_hit(1, 1.4);  // after the bounce
-  r.racket_hit(0, 1.9);  // a volley, before any bounce: legal in tennis
+  r.racket_hit(1, 1.4, kBehindTeam0sEnd);  // after the bounce
+  r.racket_hit(0, 1.9, kBehindTeam0sEnd);  // a volley, before any bounce: legal in tennis
   EXPECT_FALSE(r.call());
   r.surface_contact(kGround, kWide, 2.5);
   ASSERT_TRUE(r.call());
@@ -63,10 +66,10 @@ TEST(RallyReferee, DoubleHitBodyTouchAndOneStrokeOnTheStrings) {
   auto r = tennis_singles();
   r.start_point(0, 0, 0);
   r.surface_contact(kGround, kTeam0Court, 0.3);
-  r.racket_hit(0, 0.60);
-  r.racket_hit(0, 0.65);  // still the same stroke
+  r.racket_hit(0, 0.60, kBehindTeam0sEnd);
+  r.racket_hit(0, 0.65, kBehindTeam0sEnd);  // still the same stroke
   EXPECT_FALSE(r.call());
-  r.racket_hit(0, 0.90);  // a second stroke on the same crossing
+  r.racket_hit(0, 0.90, kBehindTeam0sEnd);  // a second stroke on the same crossing
   ASSERT_TRUE(r.call());
   EXPECT_EQ(r.call()->reason, "double_hit");
   EXPECT_EQ(r.call()->winner_team, 1);
@@ -101,13 +104,13 @@ TEST(RallyReferee, StallLosesForTheSideToPlay) {
 TEST(RallyReferee, TableTennisForbidsVolleysAndTheFloorIsOut) {
   RallyReferee r(table_tennis_game(), {0, 1}, false, false);
   r.start_point(1, 1, 0);
-  r.racket_hit(1, 0.2);  // before the ball bounced on the table
+  r.racket_hit(1, 0.2, kBehindTeam0sEnd);  // before the ball bounced on the table
   ASSERT_TRUE(r.call());
   EXPECT_EQ(r.call()->reason, "volley");
 
   r.start_point(1, 1, 1);
   r.surface_contact(kTable, Eigen::Vector3d(0.8, 0.2, 0.76), 1.2);
-  r.racket_hit(1, 1.5);
+  r.racket_hit(1, 1.5, kBehindTeam0sEnd);
   r.surface_contact(kGround, Eigen::Vector3d(-2.5, 0, 0), 1.9);  // over the table, no bounce
   ASSERT_TRUE(r.call());
   EXPECT_EQ(r.call()->reason, "out");
@@ -125,11 +128,11 @@ TEST(RallyReferee, TableTennisDoublesPartnersAlternate) {
   RallyReferee r(table_tennis_game(), {0, 0, 1, 1}, true, true);
   r.start_point(0, /*first_hitter=*/1, 0);
   r.surface_contact(kTable, Eigen::Vector3d(-0.8, 0.2, 0.76), 0.2);
-  r.racket_hit(1, 0.4);
+  r.racket_hit(1, 0.4, kBehindTeam0sEnd);
   r.surface_contact(kTable, Eigen::Vector3d(0.8, 0.2, 0.76), 0.6);
-  r.racket_hit(3, 0.8);
+  r.racket_hit(3, 0.8, kBehindTeam0sEnd);
   r.surface_contact(kTable, Eigen::Vector3d(-0.8, 0.2, 0.76), 1.0);
-  r.racket_hit(1, 1.2);  // slot 1 again: its partner, slot 0, had to play
+  r.racket_hit(1, 1.2, kBehindTeam0sEnd);  // slot 1 again: its partner, slot 0, had to play
   ASSERT_TRUE(r.call());
   EXPECT_EQ(r.call()->reason, "wrong_hitter");
   EXPECT_EQ(r.call()->winner_team, 1);
@@ -149,7 +152,7 @@ TEST(RallyReferee, TennisServeInTheDiagonalBoxStartsTheRally) {
   auto r = tennis_singles();
   r.start_serve(0, tennis_serve(false), 0);
   EXPECT_TRUE(r.serving());
-  r.racket_hit(0, 0.5);
+  r.racket_hit(0, 0.5, kBehindTeam0sEnd);
   r.surface_contact(kGround, Eigen::Vector3d(5, 2, 0), 1.2);
   EXPECT_FALSE(r.call());
   EXPECT_EQ(r.replay(), RallyReferee::Replay::None);
@@ -157,7 +160,7 @@ TEST(RallyReferee, TennisServeInTheDiagonalBoxStartsTheRally) {
   ASSERT_FALSE(r.events().empty());
   EXPECT_EQ(r.events().back().value("call", ""), "serve_in");  // what the bench counts
   EXPECT_EQ(r.bounces(), 1);
-  r.racket_hit(1, 1.5);  // returned after the bounce
+  r.racket_hit(1, 1.5, kBehindTeam0sEnd);  // returned after the bounce
   EXPECT_FALSE(r.call());
   EXPECT_EQ(r.striker_team(), 1);
 }
@@ -168,17 +171,17 @@ TEST(RallyReferee, TennisServeOutsideTheBoxIsAFaultAndTwoLoseThePoint) {
   for (const Eigen::Vector3d& where :
        {Eigen::Vector3d(8, 2, 0), Eigen::Vector3d(4, -2, 0), Eigen::Vector3d(-3, 0, 0)}) {
     r.start_serve(0, tennis_serve(false), 0);
-    r.racket_hit(0, 0.5);
+    r.racket_hit(0, 0.5, kBehindTeam0sEnd);
     r.surface_contact(kGround, where, 1.2);
     EXPECT_FALSE(r.call()) << where.transpose();
     EXPECT_EQ(r.replay(), RallyReferee::Replay::Fault) << where.transpose();
     EXPECT_EQ(r.events().back()["call"], "fault");
-    r.racket_hit(1, 1.5);  // nothing more is called till the serve is taken again
+    r.racket_hit(1, 1.5, kBehindTeam0sEnd);  // nothing more is called till the serve is taken again
     EXPECT_FALSE(r.call());
   }
   // The same serve on the second serve loses the point.
   r.start_serve(0, tennis_serve(true), 2);
-  r.racket_hit(0, 2.5);
+  r.racket_hit(0, 2.5, kBehindTeam0sEnd);
   r.surface_contact(kGround, Eigen::Vector3d(8, 2, 0), 3.2);
   ASSERT_TRUE(r.call());
   EXPECT_EQ(r.call()->reason, "double_fault");
@@ -186,7 +189,7 @@ TEST(RallyReferee, TennisServeOutsideTheBoxIsAFaultAndTwoLoseThePoint) {
   EXPECT_EQ(r.call()->culprit_slot, 0);
   // The ad court's box is the other one.
   r.start_serve(0, tennis_serve(true, -1), 4);
-  r.racket_hit(0, 4.5);
+  r.racket_hit(0, 4.5, kBehindTeam0sEnd);
   r.surface_contact(kGround, Eigen::Vector3d(4, -2, 0), 5.2);
   EXPECT_FALSE(r.call());
   EXPECT_FALSE(r.serving());
@@ -195,7 +198,7 @@ TEST(RallyReferee, TennisServeOutsideTheBoxIsAFaultAndTwoLoseThePoint) {
 TEST(RallyReferee, TennisNetCordServeInIsALetAndAMissedTossAFault) {
   auto r = tennis_singles();
   r.start_serve(0, tennis_serve(true), 0);
-  r.racket_hit(0, 0.5);
+  r.racket_hit(0, 0.5, kBehindTeam0sEnd);
   r.surface_contact(kNet, Eigen::Vector3d(0, 1, 0.99), 0.9);
   r.surface_contact(kGround, Eigen::Vector3d(3, 1, 0), 1.1);
   EXPECT_FALSE(r.call());  // not even on the second serve
@@ -215,8 +218,8 @@ TEST(RallyReferee, TennisNetCordServeInIsALetAndAMissedTossAFault) {
   EXPECT_EQ(r.call()->reason, "double_fault");
 
   r.start_serve(0, tennis_serve(false), 8);  // the receiver may not volley the serve
-  r.racket_hit(0, 8.5);
-  r.racket_hit(1, 9.0);
+  r.racket_hit(0, 8.5, kBehindTeam0sEnd);
+  r.racket_hit(1, 9.0, kBehindTeam0sEnd);
   ASSERT_TRUE(r.call());
   EXPECT_EQ(r.call()->reason, "volley");
   EXPECT_EQ(r.call()->winner_team, 0);
@@ -227,7 +230,7 @@ TEST(RallyReferee, TennisNetCordServeInIsALetAndAMissedTossAFault) {
 TEST(RallyReferee, AFallOnTheTickOfAFaultOrALetLosesThePoint) {
   auto r = tennis_singles();
   r.start_serve(0, tennis_serve(false), 0);
-  r.racket_hit(0, 0.5);
+  r.racket_hit(0, 0.5, kBehindTeam0sEnd);
   r.surface_contact(kGround, Eigen::Vector3d(8, 2, 0), 1.2);  // long: a first fault
   ASSERT_EQ(r.replay(), RallyReferee::Replay::Fault);
   r.concede(1, 1, "fall");  // the receiver fell on that tick
@@ -238,7 +241,7 @@ TEST(RallyReferee, AFallOnTheTickOfAFaultOrALetLosesThePoint) {
   EXPECT_EQ(r.replay(), RallyReferee::Replay::None);
 
   r.start_serve(0, tennis_serve(true), 2);  // a net-cord let, and the server fell
-  r.racket_hit(0, 2.5);
+  r.racket_hit(0, 2.5, kBehindTeam0sEnd);
   r.surface_contact(kNet, Eigen::Vector3d(0, 1, 0.99), 2.9);
   r.surface_contact(kGround, Eigen::Vector3d(3, 1, 0), 3.1);
   ASSERT_EQ(r.replay(), RallyReferee::Replay::Let);
@@ -264,19 +267,19 @@ TEST(RallyReferee, TableTennisServeMustBounceOnTheServersCourtFirst) {
   ServeRule rule;  // singles: anywhere on each court
   const double z = 0.78;
   r.start_serve(0, rule, 0);
-  r.racket_hit(0, 0.3);
+  r.racket_hit(0, 0.3, kBehindTeam0sEnd);
   r.surface_contact(kTable, Eigen::Vector3d(-0.6, 0.1, z), 0.5);
   EXPECT_FALSE(r.call());
   EXPECT_TRUE(r.serving());
   r.surface_contact(kTable, Eigen::Vector3d(0.8, -0.2, z), 0.9);
   EXPECT_FALSE(r.call());
   EXPECT_FALSE(r.serving());
-  r.racket_hit(1, 1.2);  // returned after its bounce
+  r.racket_hit(1, 1.2, kBehindTeam0sEnd);  // returned after its bounce
   EXPECT_FALSE(r.call());
 
   // Straight onto the receiver's court: a fault, and in table tennis the point.
   r.start_serve(0, rule, 2);
-  r.racket_hit(0, 2.3);
+  r.racket_hit(0, 2.3, kBehindTeam0sEnd);
   r.surface_contact(kTable, Eigen::Vector3d(0.8, -0.2, z), 2.7);
   ASSERT_TRUE(r.call());
   EXPECT_EQ(r.call()->reason, "fault");
@@ -285,13 +288,13 @@ TEST(RallyReferee, TableTennisServeMustBounceOnTheServersCourtFirst) {
 
   // Twice on its own court, or off the end of the receiver's: faults.
   r.start_serve(0, rule, 4);
-  r.racket_hit(0, 4.3);
+  r.racket_hit(0, 4.3, kBehindTeam0sEnd);
   r.surface_contact(kTable, Eigen::Vector3d(-0.9, 0, z), 4.5);
   r.surface_contact(kTable, Eigen::Vector3d(-0.2, 0, z), 4.7);
   ASSERT_TRUE(r.call());
   EXPECT_EQ(r.call()->reason, "fault");
   r.start_serve(0, rule, 6);
-  r.racket_hit(0, 6.3);
+  r.racket_hit(0, 6.3, kBehindTeam0sEnd);
   r.surface_contact(kTable, Eigen::Vector3d(-0.9, 0, z), 6.5);
   r.surface_contact(kGround, Eigen::Vector3d(2.0, 0, 0.02), 6.9);
   ASSERT_TRUE(r.call());
@@ -299,12 +302,31 @@ TEST(RallyReferee, TableTennisServeMustBounceOnTheServersCourtFirst) {
 
   // A net cord that then lands in: a let.
   r.start_serve(0, rule, 8);
-  r.racket_hit(0, 8.3);
+  r.racket_hit(0, 8.3, kBehindTeam0sEnd);
   r.surface_contact(kTable, Eigen::Vector3d(-0.6, 0, z), 8.5);
   r.surface_contact(kNet, Eigen::Vector3d(0, 0, 0.9), 8.7);
   r.surface_contact(kTable, Eigen::Vector3d(0.3, 0, z), 8.8);
   EXPECT_FALSE(r.call());
   EXPECT_EQ(r.replay(), RallyReferee::Replay::Let);
+}
+
+// ITTF 2.6.4: the serve is struck behind the server's end line and above the playing surface.
+TEST(RallyReferee, TableTennisServeStruckOverTheTableOrBelowItIsAFault) {
+  for (const Eigen::Vector3d& ball :
+       {Eigen::Vector3d(-1.2, 0, 1.0), Eigen::Vector3d(-1.5, 0, 0.7)}) {
+    RallyReferee r(table_tennis_game(), {0, 1}, false, false);
+    r.start_serve(0, ServeRule{}, 0);
+    r.racket_hit(0, 0.3, ball);
+    ASSERT_TRUE(r.call()) << ball.transpose();
+    EXPECT_EQ(r.call()->reason, "fault");
+    EXPECT_EQ(r.call()->winner_team, 1);
+    EXPECT_EQ(r.events()[r.events().size() - 2]["reason"], "struck_over_table");
+  }
+  // Tennis has no such line for the ball (a foot fault is not called).
+  RallyReferee tennis = tennis_singles();
+  tennis.start_serve(0, tennis_serve(false), 0);
+  tennis.racket_hit(0, 0.3, Eigen::Vector3d(-5, 0, 2.5));
+  EXPECT_FALSE(tennis.call());
 }
 
 TEST(RallyReferee, TableTennisDoublesServeGoesRightHalfToRightHalf) {
@@ -314,27 +336,27 @@ TEST(RallyReferee, TableTennisDoublesServeGoesRightHalfToRightHalf) {
   rule.receiver_y_sign = 1;  // team 0 faces +x: its right half is y < 0, the receiver's y > 0
   const double z = 0.78;
   r.start_serve(0, rule, 0);
-  r.racket_hit(1, 0.3);
+  r.racket_hit(1, 0.3, kBehindTeam0sEnd);
   r.surface_contact(kTable, Eigen::Vector3d(-0.6, -0.3, z), 0.5);
   r.surface_contact(kTable, Eigen::Vector3d(0.8, 0.3, z), 0.9);
   EXPECT_FALSE(r.call());
   EXPECT_FALSE(r.serving());
 
   r.start_serve(0, rule, 2);  // from the left half: a fault
-  r.racket_hit(1, 2.3);
+  r.racket_hit(1, 2.3, kBehindTeam0sEnd);
   r.surface_contact(kTable, Eigen::Vector3d(-0.6, 0.3, z), 2.5);
   ASSERT_TRUE(r.call());
   EXPECT_EQ(r.call()->reason, "fault");
 
   r.start_serve(0, rule, 4);  // to the receiver's left half: a fault
-  r.racket_hit(1, 4.3);
+  r.racket_hit(1, 4.3, kBehindTeam0sEnd);
   r.surface_contact(kTable, Eigen::Vector3d(-0.6, -0.3, z), 4.5);
   r.surface_contact(kTable, Eigen::Vector3d(0.8, -0.3, z), 4.9);
   ASSERT_TRUE(r.call());
   EXPECT_EQ(r.call()->reason, "fault");
 
   r.start_serve(0, rule, 6);  // the partner may not serve
-  r.racket_hit(0, 6.3);
+  r.racket_hit(0, 6.3, kBehindTeam0sEnd);
   ASSERT_TRUE(r.call());
   EXPECT_EQ(r.call()->reason, "wrong_hitter");
 }
