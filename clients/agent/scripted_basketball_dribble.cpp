@@ -51,13 +51,13 @@ std::optional<BasketballDribble::Meeting> BasketballDribble::next_meeting(
       rising_after_bounce = true;
     }
     if (!rising_after_bounce) continue;
-    if (before.z() < meet && x.z() >= meet) return Meeting{t + kServerStep_s, x, v, 0};
-    if (v_before.z() > 0 && v.z() <= 0) return Meeting{t + kServerStep_s, x, v, x.z()};
+    if (before.z() < meet && x.z() >= meet) return Meeting{t + kServerStep_s, x, v};
+    if (v_before.z() > 0 && v.z() <= 0) return Meeting{t + kServerStep_s, x, v};
   }
   return std::nullopt;
 }
 
-// The palm's centre, heading frame, `t` s into the stroke (or waiting, without one).
+// The palm's centre, feet's frame, `t` s into the stroke (or waiting, without one).
 Eigen::Vector3d BasketballDribble::palm_goal(double t) const {
   const double dip = push_speed_ * p_.stroke_s / M_PI;  // the cosine's depth for that speed
   const double ready = meet_z_ + dip / 2;
@@ -122,7 +122,7 @@ void BasketballDribble::drive(const control::BodyPose& pose, const Eigen::Vector
   if (rising && !ball_was_rising_ && ball.z() < floor + 0.4) adapt_pending_ = bounced_once_ = true;
   ball_was_rising_ = rising;
   if (adapt_pending_ && meeting && count_.strokes > 0) {
-    // The apex of the path from here (the meeting's apex only if it is below the meeting height).
+    // The apex of the ball's path from here, just off the floor.
     double apex = ball.z(), vz = ball_velocity.z();
     apex += vz * vz / (2 * kGravity);  // drag's share over 0.8 m is a few millimetres
     push_speed_ = std::clamp(push_speed_ + p_.apex_gain * (floor + p_.apex_wanted - apex),

@@ -1,8 +1,8 @@
 // A standing dribble for the SMPL-X basketball player (issue 30, first round): the right hand
 // bounces the ball off the floor, from the observation alone. What it does, measured
 // (docs/basketball.md, "The standing dribble"): at a 1v1's check ball it meets the ball after
-// its first bounce and pushes it back down (one dribble on every tuning seed, two on about one in
-// four), then loses it and falls about 2.1 s in. Not used by any match player yet.
+// its first bounce and pushes it back down (one dribble on all 300 unseen seeds, two on 8%), then
+// loses it and falls about 2.1 s in. Not used by any match player yet.
 //
 // Each tick the ball's path is predicted (gravity, the basketball's drag, the floor's bounce with
 // its restitution) to the next time it comes up through the meeting height (`meet_height`, or its
@@ -76,9 +76,8 @@ class BasketballDribble {
  private:
   struct Meeting {
     double in_s;           // s from now
-    Eigen::Vector3d ball;  // the ball's centre then
+    Eigen::Vector3d ball;  // the ball's centre then (feet's frame)
     Eigen::Vector3d velocity;
-    double apex;  // the highest the ball gets on its way up (heading frame z)
   };
   // The next time the ball, after coming up off the floor, reaches the meeting height (or its
   // apex, if lower), from its state now; none within a second.
