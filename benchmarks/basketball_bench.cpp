@@ -6,6 +6,7 @@
 #include <map>
 
 #include "basketball/basketball_match.h"
+#include "basketball_dribble_bench.h"
 #include "bench_support.h"
 #include "core/humanoid_assets.h"
 #include "registry.h"
@@ -189,6 +190,11 @@ nlohmann::json run_basketball_bench(const BasketballBenchOptions& o) {
     report["scripted_1v1"] = scripted_games(episode_seeds(o.game_seeds, 0), o.game_s);
     report["scripted_1v1"]["seeds"] = o.game_seeds;
   }
+  if (!o.dribble_seeds.empty()) {
+    report["scripted_dribble"] =
+        scripted_dribbles(episode_seeds(o.dribble_seeds, 0), o.dribble_s, o.per_dribble);
+    report["scripted_dribble"]["seeds"] = o.dribble_seeds;
+  }
   if (o.speed) {
     static const core::ModelSpec smplx = core::load_humanoid(core::HumanoidKind::SmplX);
     for (const char* mode : {"1v1", "2v2"})
@@ -239,6 +245,20 @@ void print_basketball_report(const nlohmann::json& r) {
         g["shots"].get<int>(), g["heaves"].get<int>(), g["made"].get<int>(),
         100 * g["made_share_ci95"][0].get<double>(), 100 * g["made_share_ci95"][1].get<double>(),
         rate(g["falls_per_min"]).c_str(), g["stoppages"].dump().c_str());
+  }
+  if (r.contains("scripted_dribble")) {
+    const auto& d = r["scripted_dribble"];
+    std::printf(
+        "scripted dribble, %d episodes of %g s (seeds %s): consecutive dribbles before the ball "
+        "was lost, median %d, p10 %d; one or more in %d (95%% interval %.1f-%.1f%%), two or more "
+        "in "
+        "%d; kept to the end %.1f%% (95%% interval %.1f-%.1f%%); episodes with a fall %d\n",
+        d["episodes"].get<int>(), d["seconds"].get<double>(), d["seeds"].get<std::string>().c_str(),
+        d["dribbles_median"].get<int>(), d["dribbles_p10"].get<int>(), d["one_or_more"].get<int>(),
+        100 * d["one_or_more_ci95"][0].get<double>(), 100 * d["one_or_more_ci95"][1].get<double>(),
+        d["two_or_more"].get<int>(), 100 * d["kept_share"].get<double>(),
+        100 * d["kept_ci95"][0].get<double>(), 100 * d["kept_ci95"][1].get<double>(),
+        d["falls"].get<int>());
   }
   for (const char* mode : {"1v1", "2v2"}) {
     const std::string key = "speed_" + std::string(mode);

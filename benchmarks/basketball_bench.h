@@ -25,6 +25,11 @@ struct BasketballBenchOptions {
   // ("400001-400024"; empty: none), each `game_s` seconds of play.
   std::string game_seeds;
   double game_s = 600;
+  // The standing dribble (basketball_dribble_bench.h), one episode per seed of `dribble_seeds`
+  // (empty: none), `dribble_s` seconds each.
+  std::string dribble_seeds;
+  double dribble_s = 10;
+  bool per_dribble = false;  // each episode in the report
 };
 
 nlohmann::json run_basketball_bench(const BasketballBenchOptions& options);

@@ -1,6 +1,7 @@
 // olympics-bench basketball [--json] [--throws N | --seeds A-B,..] [--policies P,..]
 //                           [--distances D,.. | --no-distances] [--per-throw]
 //                           [--games A-B,.. [--game-seconds S]] [--no-free-throws]
+//                           [--dribbles A-B,.. [--dribble-seconds S] [--per-dribble]]
 #include "basketball_bench.h"
 #include "bench_command.h"
 
@@ -28,6 +29,12 @@ BenchCommand basketball_command(CLI::App& app) {
                  "400001-400024)");
   cli.add_option("--game-seconds", o->game_s, "seconds of play per scripted 1v1 game")
       ->check(CLI::PositiveNumber);
+  cli.add_option("--dribbles", o->dribble_seeds,
+                 "the scripted standing dribble, one episode per seed (the first check ball of a "
+                 "1v1: 1-40)");
+  cli.add_option("--dribble-seconds", o->dribble_s, "seconds of dribbling per episode")
+      ->check(CLI::PositiveNumber);
+  cli.add_flag("--per-dribble", o->per_dribble, "each dribble episode in the report");
   cli.add_flag("--no-free-throws{false}", o->free_throws, "skip the free throws");
   cli.add_flag("--no-speed{false}", o->speed, "skip the ticks/s measurements");
   cli.add_option("--seconds", o->seconds, "wall seconds per speed measurement")
