@@ -134,11 +134,34 @@ TEST(ScriptedRacketPolicy, ReturnsFedBallsOntoTheOtherHalf) {
   EXPECT_GE(returned, 4);
 }
 
-// The feed comes at the fed player's body line, 0.45 m left of where its forehand meets balls
-// best: the player sidesteps left as it comes, so that the ball passes on the racket side. Over
-// the first feeds of 1v1 seeds 1-40, where the ball is as it comes level with the sweet spot
-// (0.45 m ahead of the root): on average at least 0.16 m right of the root (with the walker's
-// default side gait, 0.30 s steps at up to 0.55 m/s: 0.143 m), and nobody falls.
+// Table-tennis ball return, whole episodes (every ball fed until one is lost) of seeds 201-300,
+// the last third of the sixth round's tuning seeds: the player meets balls 0.25 m right of its
+// line, not at the forehand's sweet spot 0.45 m right (issue 29, sixth round), and returns more
+// of them in. Measured: 66 of 166 balls (39.8%); meeting them at the sweet spot, 41 of 141
+// (29.1%). (All of seeds 1-300: 37.5% against 31.5%; unseen seeds: docs/racket-sports.md.)
+TEST(ScriptedRacketPolicy, ReturnsMoreFedBallsMetNearTheBodyLine) {
+  int fed = 0, returned = 0;
+  for (std::uint64_t seed = 201; seed <= 300; ++seed) {
+    ScriptedRacketPlay play("table_tennis", {"ball_return", seed, 60.0, {}});
+    while (!play.over())
+      for (const auto& ev : play.tick()) {
+        const std::string call = ev.value("call", "");
+        if (call == "return_in") ++returned, ++fed;
+        if (call == "point") ++fed;
+      }
+  }
+  std::printf("returned in %d of %d fed balls\n", returned, fed);
+  ASSERT_GE(fed, 100);
+  EXPECT_GE(returned, 0.35 * fed) << "met at the sweet spot: 41 of 141";
+}
+
+// The feed comes at the fed player's body line, 0.25 m left of where it meets balls: the player
+// sidesteps left as it comes, so that the ball passes on the racket side. Over the first feeds
+// of 1v1 seeds 1-40, where the ball is as it comes level with the sweet spot (0.45 m ahead of the
+// root): on average at least 0.05 m right of the root (for a player standing still about 0: the
+// feed is aimed within 0.11 m of its line), and nobody falls. (Meeting balls at the sweet spot,
+// 0.45 m right, before issue 29's sixth round, the bar was 0.16 m: 0.185 m with these side steps,
+// 0.143 m with the walker's default side gait; now 0.082 m.)
 TEST(ScriptedRacketPolicy, SidestepsSoTheFeedPassesOnTheRacketSide) {
   int feeds = 0, falls = 0;
   double side_sum = 0;
@@ -166,9 +189,9 @@ TEST(ScriptedRacketPolicy, SidestepsSoTheFeedPassesOnTheRacketSide) {
               side_sum / feeds, falls);
   // A feed struck before it comes level with the sweet spot is not counted: since the racket
   // waits at the ready point until the backswing (HoldsTheRacketOffTheBodyLineWhileStepping), 7
-  // of the 40 are (before, 3).
+  // of the 40 were (before, 3); met 0.25 m right of the root (sixth round), none.
   ASSERT_GE(feeds, 30);
-  EXPECT_LE(side_sum / feeds, -0.16) << "the walker's default side gait: -0.143";
+  EXPECT_LE(side_sum / feeds, -0.05) << "standing still: about 0";
   EXPECT_EQ(falls, 0);
 }
 
