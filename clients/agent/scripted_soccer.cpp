@@ -23,12 +23,9 @@ constexpr double kKeepBack_m = 3.8;    // from the ball while the other side res
 constexpr double kDefend_m = 5.0;      // the second player, this far out from its own goal
 constexpr double kDownBelow_m = -0.4;  // a teammate's root this far below mine: it is down
 // In a match the chaser kicks (the penalty's kick) a ball this near the goal it attacks, and
-// dribbles a ball further out. Issue 30's third round chose 11 m (match seeds 1-12, 2v2: 9 m 4
-// goals, 11 m 7, 13 m 8 with 2 own goals, 16 m 8 with 30% more falls), when the kicker fell
-// after nearly every kick; with the kick that catches itself and the kicker's pace on the way
-// to it (below), 15 m (same seeds, goals / falls: 11 m 2 / 119, 15 m 16 / 118, 17 m 17 / 215;
-// with the dribble's line 0.12 m beside the ball, 13 m 9 / 115, 15 m 10 / 128, 20 m 11 / 173).
-constexpr double kShootFrom_m = 15.0;
+// dribbles a ball further out (match seeds 1-12, 2v2: 9 m 4 goals, 11 m 7, 13 m 8 with 2 own
+// goals, 16 m 8 with 30% more falls than 11 m, everywhere 5 with twice the falls).
+constexpr double kShootFrom_m = 11.0;
 constexpr double kKeepOff_m = 1.5;     // an opponent has the ball: I stay this far from it
 constexpr double kKeeperNear_m = 3.0;  // an opponent this near the goal I attack keeps it
 constexpr double kShotAim_m = 1.3;     // ...and I aim this far off the goal's middle, away
@@ -42,7 +39,6 @@ constexpr double kKnockedAway_mps = 2.5;  // a kick gives up on a ball knocked t
 constexpr double kDown_m = 0.6;           // ...and on a body whose root is this low
 constexpr double kKickerWalk_mps = 0.8;   // a kicker's walking speed (StepGains::max_speed)
 constexpr double kKickerWalkPerM = 1.5;   // ...and its StepGains::speed_per_m
-constexpr double kWalkPerM = 2.4;         // the match walk's StepGains::speed_per_m (the default)
 constexpr double kMatchWalk_mps = 1.0;    // a player's walking speed in a match
 constexpr double kArriveSpeed_mps = 3.0;  // a shot is kicked to be this fast at the goal line
 constexpr double kRollingDecel_mps2 =
@@ -221,18 +217,7 @@ void ScriptedSoccerPolicy::kick_chase(std::span<const float> o, const View& v, s
     const double side = left_of(dir).dot(me) >= 0 ? 1 : -1;
     target = ball - dir * 0.9 + left_of(dir) * side * 1.0;
   }
-  const double facing = bearing(target.norm() > 1.0 ? target : dir);
-  if (!penalty_) {
-    // In a match too the way to a kick goes at the penalty kicker's pace (0.8 m/s, slowing
-    // 1.5 m/s per metre from the start point), not the match walk's (1.0 m/s, 2.4 per metre):
-    // the match walk's stepping controller is shared, so the target is brought nearer in the
-    // ratio of the two. On match seeds 1-12 (2v2, shots from 15 m) 36 of 72 kicks sent the
-    // ball faster than 4 m/s, against 28 of 82 at the match walk's pace (which also fell more).
-    target *= kKickerWalkPerM / kWalkPerM;
-    const double slow_m = kKickerWalk_mps / kWalkPerM;
-    if (target.norm() > slow_m) target *= slow_m / target.norm();
-  }
-  walk(o, target, facing, a);
+  walk(o, target, bearing(target.norm() > 1.0 ? target : dir), a);
 }
 
 Eigen::Vector2d ScriptedSoccerPolicy::shot_aim(const View& v) {
