@@ -33,7 +33,7 @@ TEST(ScriptedTennisSwing, TurnsFromRestToTheContactRateAtContact) {
 // Ball-return seeds (tuning seeds) whose first ball the player plans a stroke within reach for:
 // of these 11 first balls the racket touched 1 (seed 87) with the swing solved by inverse
 // kinematics every tick along the arc (the player before issue 29's fourth round), 4 with the arm
-// turned in joint space.
+// turned in joint space (5 since the fifth round's backhand stance).
 TEST(ScriptedTennisSwing, TouchesFirstBallsItCanReach) {
   int touched = 0;
   for (std::uint64_t seed : {3, 11, 12, 21, 32, 77, 87, 90, 97, 99, 100}) {
