@@ -24,10 +24,7 @@ using control::CourtFrame;
 // are shaped. Table tennis meets the ball close and gently, tennis further out and harder.
 // Chosen on ball-return tuning seeds 1-200 (docs/racket-sports.md); never on the benchmark's.
 struct Play {
-  Eigen::Vector3d sweet_spot;  // face centre at contact, heading frame from the root
-  // The backhand's, left of the body (none: every ball is met on the forehand): the legs walk to
-  // whichever of the two puts the ball nearer.
-  std::optional<Eigen::Vector3d> backhand_spot;
+  Eigen::Vector3d sweet_spot;        // face centre at contact, heading frame from the root
   double below = 0.5, above = 0.45;  // heights about the sweet spot the arm meets balls at, m
   double home_x = 0;                 // court x the player returns to between balls
   Eigen::Vector2d aim;               // where strokes should land (court frame, far half)
@@ -103,11 +100,6 @@ Play table_play() {
 Play tennis_play() {
   Play p;
   p.sweet_spot = {0.55, -0.75, 0.25};
-  // The forehand's mirrored about the right shoulder (0.17 m right of the root), a little
-  // nearer: within the arm's reach. A ball passing on the left no longer means walking 1.15 m
-  // further to the forehand (issue 29 fifth round; ball-return tuning seeds 1-400: returns in
-  // 5 -> 10 of about 400 balls, falls 20 -> 17).
-  p.backhand_spot = Eigen::Vector3d(0.5, 0.4, 0.25);
   p.above = 0.6;
   p.home_x = -11.885;
   p.aim = {7.5, 0};
@@ -211,11 +203,6 @@ void ScriptedRacketPolicy::plan(std::span<const float> o, const CourtFrame& cour
   // weighing most.
   auto stance_of = [&](const BallSample& s) {
     Eigen::Vector3d stance = s.position - spot;
-    if (play.backhand_spot) {
-      const Eigen::Vector3d backhand = s.position - court.vector(*play.backhand_spot);
-      if ((backhand - court.root).head<2>().norm() < (stance - court.root).head<2>().norm())
-        stance = backhand;
-    }
     stance.z() = 0;
     return stance;
   };
@@ -238,11 +225,9 @@ void ScriptedRacketPolicy::plan(std::span<const float> o, const CourtFrame& cour
     const bool reachable = face.x() > 0.2 && arc_forward && (face - shoulder).norm() <= reach;
     double cost;
     if (reachable) {
-      double off = (face - play.sweet_spot).norm();
-      if (play.backhand_spot) off = std::min(off, (face - *play.backhand_spot).norm());
-      cost = 0.5 * off;
+      cost = 0.5 * (face - play.sweet_spot).norm();
     } else {
-      const double walk = (stance_of(s) - court.root).head<2>().norm();
+      const double walk = (s.position - spot - court.root).head<2>().norm();
       cost = 0.5 + 0.3 * walk + 3 * std::max(0.0, walk - play.walk_speed * (s.time - 0.2));
     }
     if (stroke_) cost += 0.5 * std::abs(s.time - (stroke_->time_to_hit - control_dt_));
@@ -342,9 +327,6 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
         const double rate = play.arc_drive * speed / std::max(0.2, radius.norm());
         const double turning =
             Eigen::Vector3d::UnitZ().cross(radius).dot(stroke_->direction) > 0 ? 1.0 : -1.0;
-        // A backhand is prepared only once the legs have taken the body there: the racket held
-        // across the body while walking toppled the player (issue 29 fifth round).
-        if (turning < 0 && !stroke_->reachable) return ready();
         const double angle =
             std::clamp(rate * (ahead - stroke_->time_to_hit),
                        -std::min(stroke_->reachable ? play.max_back_angle : play.walking_back_angle,

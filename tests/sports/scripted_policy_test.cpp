@@ -101,11 +101,9 @@ TEST(ScriptedRacketPolicy, MovesTowardTheComingBall) {
       match->step({std::span<const float>(act)});
     }
     if (match->outcome().match_over) continue;
-    // Court y of the ball here, and where the player should stand: the ball 1.05 m to its right
-    // (the forehand), or 0.4 m to its left (the backhand), whichever is the shorter walk.
+    // Court y of the ball here, and where the player should stand: the ball 1.05 m to its right.
     const double ball_court_y = obs[kCourtY] + obs[kBallY];
-    const double forehand = ball_court_y + 1.05 - start_y, backhand = ball_court_y - 0.4 - start_y;
-    const double wanted = std::abs(forehand) < std::abs(backhand) ? forehand : backhand;
+    const double wanted = ball_court_y + 1.05 - start_y;
     if (std::abs(wanted) < 0.6) continue;
     ++far_balls;
     const double moved = obs[kCourtY] - start_y;
