@@ -16,7 +16,8 @@
 //   allowed for;
 // - the legs: a StepController walks toward where the ball will be met, then stands balancing
 //   the centre of mass (control/body_model.h) while the arm swings; between balls it walks home.
-// In doubles, table-tennis partners strike in turn and tennis partners take the nearer ball.
+// In doubles, table-tennis partners strike in turn (a point's first stroke by the partner on
+// whose side the ball lands) and tennis partners take the nearer ball.
 // With the racket sports' `start: "serve"` it serves the toss legally (control/serve_plan.h).
 // docs/racket-sports.md has its figures.
 #pragma once
@@ -43,7 +44,7 @@ class ScriptedRacketPolicy : public Policy {
   // Where the observation's fields it reads start (match_info.h: found by name).
   struct Blocks {
     int ball = 0, ball_velocity = 0, court_x = 0, court_y = 0, heading_cos = 0, heading_sin = 0,
-        struck = 0, coming = 0, bounces = 0;
+        struck = 0, coming = 0, bounces = 0, landing = 0;
   };
   // The stroke being played (court frame), for tests and tuning.
   struct Stroke {
@@ -72,7 +73,7 @@ class ScriptedRacketPolicy : public Policy {
 
   // Doubles: is it this player's ball (its side of the court in tennis, its turn at the table)?
   bool my_ball(const control::CourtFrame& court, const Eigen::Vector3d& partner,
-               const Eigen::Vector3d& ball);
+               const Eigen::Vector3d& ball, const Eigen::Vector3d& landing, bool team_coming);
 
   Blocks blocks_;
   std::vector<int> others_;  // the other players' root positions ("others"; none in ball return)

@@ -31,6 +31,10 @@ struct RacketGame {
   double table_thickness = 0.03;
   double player_x = 0;   // players stand at x = -/+ player_x
   double partner_y = 0;  // in doubles, partners at y = -/+ partner_y
+  // In doubles, the partner on the left (as it faces the net) stands this much nearer the net and
+  // the one on the right this much further back: side by side, their arms (the rest pose's, held
+  // out level) would overlap.
+  double partner_stagger = 0;
 
   // Ball return: launched from x = launch_x on the far side (y in +-launch_y, z launch_z) with
   // horizontal speed in [launch_speed_lo, hi] to a landing point uniform on the player's half.

@@ -156,8 +156,11 @@ core::RootPlacement RacketMatch::start_placement(int slot) const {
     else if (!config_.game.on_table)
       y = away * config_.game.serve_y;
   }
+  double x = config_.game.player_x;
+  if (config_.mode == RacketMode::Doubles)  // -side * y: its y as it faces the net, left +
+    x += (-side * y > 0 ? -1 : 1) * config_.game.partner_stagger;
   // Facing the net: team 0 (at -x) looks along +x, team 1 along -x.
-  return {{side * config_.game.player_x, y, 0}, side < 0 ? 0.0 : M_PI};
+  return {{side * x, y, 0}, side < 0 ? 0.0 : M_PI};
 }
 
 equipment::Pose RacketMatch::racket_pose(int slot) const {

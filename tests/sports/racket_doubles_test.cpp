@@ -1,0 +1,89 @@
+// Table-tennis doubles partners at their marks: a point starts with every player in the rest pose
+// (arms held out level), so marks side by side 0.8 m apart put each one's hand in the other's
+// body, and the scripted partners then tangled and fell (docs/racket-sports.md, doubles).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "registry.h"
+#include "scripted_racket_play.h"
+#include "smpl_observation.h"
+
+namespace olympics::client {
+namespace {
+
+// The partner's root from `slot`'s observation (heading frame, from the root): the other player
+// on this side of the net.
+Eigen::Vector3d partner_of(const ObservationLayout& layout, std::span<const float> o) {
+  for (int k = 0; layout.has("others", "position_" + std::to_string(k)); ++k) {
+    const Eigen::Vector3d p =
+        smpl::vec3(o, layout.offset("others", "position_" + std::to_string(k)));
+    if (std::abs(p.x()) < 1.5) return p;
+  }
+  ADD_FAILURE() << "no partner within 1.5 m along the table";
+  return Eigen::Vector3d::Zero();
+}
+
+// Each hand at least 0.25 m (horizontally) from the partner's root: clear of its trunk (about
+// 0.12 m deep each way of the root) with the paddle's 8 cm disc. Side by side: 0.09 m.
+TEST(RacketDoubles, TableTennisPartnersStartWithTheirHandsClearOfEachOther) {
+  for (const nlohmann::json& options :
+       {nlohmann::json::object(), nlohmann::json{{"start", "serve"}}})
+    for (std::uint64_t seed : {1, 2, 3}) {
+      auto match = sports::sport_or_throw("table_tennis").create({"2v2", seed, 60.0, options});
+      const auto layout = ObservationLayout::from_blocks(match->layout().observation);
+      std::vector<float> o(match->obs_size());
+      for (int slot = 0; slot < match->slot_count(); ++slot) {
+        match->observe(slot, o);
+        const Eigen::Vector3d partner = partner_of(layout, o);
+        for (int hand : {smpl::kLHand, smpl::kRHand}) {
+          const double apart = (smpl::body_position(o, hand) - partner).head<2>().norm();
+          EXPECT_GE(apart, 0.25) << "seed " << seed << " " << options << " slot " << slot
+                                 << " hand " << hand << ": in the partner's body";
+        }
+      }
+    }
+}
+
+// Scripted table-tennis 2v2, seeds 1-2, 30 s at most each: how often a player falls and how often
+// partners' roots come closer than 0.5 m (slots 0, 1 and 2, 3 are partners).
+struct DoublesPlay {
+  int falls = 0, ticks = 0, close_ticks = 0;
+  double seconds = 0;
+};
+
+DoublesPlay play_table_tennis_doubles() {
+  DoublesPlay r;
+  for (std::uint64_t seed : {1, 2}) {
+    ScriptedRacketPlay play("table_tennis", {"2v2", seed, 30.0, {}});
+    const int x = play.layout.offset("court_position", "x");
+    const int y = play.layout.offset("court_position", "y");
+    while (!play.over()) {
+      for (const auto& e : play.tick()) r.falls += e.value("call", "") == "fall";
+      for (int team = 0; team < 2; ++team) {
+        const auto& a = play.obs[2 * team];
+        const auto& b = play.obs[2 * team + 1];
+        ++r.ticks;
+        r.close_ticks += std::hypot(a[x] - b[x], a[y] - b[y]) < 0.5;
+      }
+    }
+    r.seconds += play.match->tick() * core::kControlDt;
+  }
+  return r;
+}
+
+// From side-by-side marks the partners' held-out arms tangled as every point started: they were
+// pulled into each other and fell about 30 times a minute.
+TEST(RacketDoubles, ScriptedTableTennisPartnersKeepApartAndStand) {
+  const DoublesPlay r = play_table_tennis_doubles();
+  const double per_minute = r.falls / (r.seconds / 60);
+  const double close = static_cast<double>(r.close_ticks) / r.ticks;
+  std::printf("falls %d in %.0f s (%.1f a minute); partners closer than 0.5 m in %.1f%% of ticks\n",
+              r.falls, r.seconds, per_minute, 100 * close);
+  ASSERT_GT(r.seconds, 20);
+  EXPECT_LE(per_minute, 5);
+  EXPECT_LE(close, 0.05);
+}
+
+}  // namespace
+}  // namespace olympics::client
