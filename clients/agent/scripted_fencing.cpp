@@ -12,18 +12,16 @@ namespace olympics::client {
 namespace {
 
 using namespace smpl;
-using Stage = control::GuardFootwork::Stage;
 
-constexpr double kGuardFar_m = 2.3;    // root to root: further than this, advance
-constexpr double kGuardNear_m = 1.9;   // nearer than this (not attacking), retreat
-constexpr double kTooClose_m = 1.35;   // attacking, nearer than this without a lunge: get out
-constexpr double kLaunchGap_m = 0.45;  // the tip this far short of the chest: lunge
-constexpr double kWait_s = 0.6;        // at guard distance this long, then attack
-constexpr double kClosing = 0.3;       // m/s: the opponent closing faster than this, retreat
-constexpr double kNoRoom_m = 1.0;      // nearer my end than this, no retreat
-constexpr double kArmRate = 2.0;       // rad/s the épée arm turns at (faster spins the body)
-constexpr double kToMiddle = 0.3;      // m sideways per m off the piste's middle, per step
-constexpr double kToMiddleMax = 0.08;
+constexpr double kOutOfReach_m = 2.1;  // root to root: the tips cannot reach
+constexpr double kLunge_m = 1.25;      // root to root while attacking: the tip is in the target
+constexpr double kAttack_s = 1.2;      // longest attack before falling back
+constexpr double kRecover_s = 0.8;
+constexpr double kArmRate = 2.0;  // rad/s the épée arm turns at (faster spins the body)
+// Walking speed (m/s). Most falls came as both fencers rushed in at the stepping controller's
+// 1.2 m/s and collided or stopped short; at 0.7 they fell about 20 times less often on seeds
+// 1-40 (the tuning seeds; 0.6-0.8 were alike, 0.9 fell five times as often).
+constexpr double kMaxSpeed = 0.7;
 
 }  // namespace
 
@@ -31,50 +29,16 @@ void ScriptedFencingPolicy::start(const MatchInfo& match) {
   if (match.sport != "fencing")
     throw std::invalid_argument("the scripted fencing policy plays fencing, not " + match.sport);
   const ObservationLayout& l = match.observation;
-  blocks_ = {l.offset("opponent_root", "position"), l.offset("opponent_root", "velocity"),
-             l.offset("opponent_targets", "chest"), l.offset("tip", "position"),
-             l.offset("piste", "across"),           l.offset("piste", "to_my_end")};
+  blocks_ = {l.offset("opponent_root", "position"), l.offset("opponent_targets", "chest"),
+             l.offset("piste", "to_my_end")};
   control_dt_ = match.control_dt;
-  legs_.emplace(control::GuardGains{}, control_dt_);
+  StepGains gains;
+  gains.turn_start = 0.3;  // keep facing the opponent, stepping in place if need be
+  gains.max_speed = kMaxSpeed;
+  legs_.emplace(gains, control_dt_);
   arm_ = ArmDirection(Arm::Right);
-  in_guard_s_ = 0;
-  attacking_ = false;
-  last_distance_ = 0;
-}
-
-bool ScriptedFencingPolicy::lunging() const {
-  return legs_ && (legs_->stage() == Stage::Lunging || legs_->stage() == Stage::Lunged);
-}
-
-ScriptedFencingPolicy::Move ScriptedFencingPolicy::choose(std::span<const float> o) {
-  const Blocks& at = blocks_;
-  const Eigen::Vector3d opponent = vec3(o, at.opponent);
-  const double distance = opponent.head<2>().norm();
-  const Eigen::Vector2d towards = opponent.head<2>() / std::max(distance, 1e-6);
-  // Positive: the opponent moves toward me.
-  const double closing = -vec3(o, at.opponent_velocity).head<2>().dot(towards);
-  const double gap = (vec3(o, at.chest) - vec3(o, at.tip)).head<2>().norm();
-  const bool room = o[at.to_my_end] > kNoRoom_m;
-
-  if (distance > 3.5) attacking_ = false, in_guard_s_ = 0;  // a halt: back on the lines
-  if (legs_->out_of_guard(o)) return room ? Move::Retreat : Move::Advance;
-  if (gap < kLaunchGap_m) {  // in reach: lunge (an attack's, or a stop hit)
-    attacking_ = false, in_guard_s_ = 0;
-    return Move::Lunge;
-  }
-  if (attacking_) {
-    if (distance < kTooClose_m) {
-      attacking_ = false, in_guard_s_ = 0;
-      return room ? Move::Retreat : Move::Guard;
-    }
-    return Move::Advance;
-  }
-  if (closing > kClosing && distance < kGuardFar_m && room) return Move::Retreat;
-  if (distance > kGuardFar_m) return Move::Advance;
-  if (distance < kGuardNear_m && room) return Move::Retreat;
-  in_guard_s_ += control_dt_;
-  if (in_guard_s_ > kWait_s) attacking_ = true;
-  return Move::Guard;
+  phase_ = Phase::Approach;
+  phase_s_ = 0;
 }
 
 void ScriptedFencingPolicy::act(std::span<const float> o, std::span<float> a) {
@@ -86,14 +50,28 @@ void ScriptedFencingPolicy::act(std::span<const float> o, std::span<float> a) {
   const Blocks& at = blocks_;
   const Eigen::Vector3d opponent = vec3(o, at.opponent);
   const Eigen::Vector3d chest = vec3(o, at.chest);
+  const Eigen::Vector2d line = opponent.head<2>();
+  const double distance = line.norm();
+  const Eigen::Vector2d towards =
+      distance > 1e-6 ? Eigen::Vector2d(line / distance) : Eigen::Vector2d(1, 0);
 
-  // A halt puts both fencers back on their lines, standing: the footwork starts afresh.
-  const double distance = opponent.head<2>().norm();
-  if (std::abs(distance - last_distance_) > 0.3) legs_.emplace(control::GuardGains{}, control_dt_);
-  last_distance_ = distance;
-  const Move wanted = legs_->free() ? choose(o) : Move::Guard;
-  const double side = -std::clamp(kToMiddle * o[at.across], -kToMiddleMax, kToMiddleMax);
-  legs_->act(o, wanted, std::atan2(opponent.y(), opponent.x()), side, a);
+  phase_s_ += control_dt_;
+  switch (phase_) {
+    case Phase::Approach:
+      if (distance < kOutOfReach_m + 0.15) phase_ = Phase::Attack, phase_s_ = 0;
+      break;
+    case Phase::Attack:
+      if (phase_s_ > kAttack_s || distance < kLunge_m) phase_ = Phase::Recover, phase_s_ = 0;
+      break;
+    case Phase::Recover:
+      if (phase_s_ > kRecover_s) phase_ = Phase::Approach, phase_s_ = 0;
+      break;
+  }
+  double keep = phase_ == Phase::Attack ? kLunge_m - 0.3 : kOutOfReach_m;
+  const double to_my_end = o[at.to_my_end];
+  if (phase_ != Phase::Attack && to_my_end < 1.5) keep = std::min(keep, distance);  // no room
+  const Eigen::Vector2d walk_to = line - towards * keep;
+  legs_->act(o, walk_to, std::atan2(line.y(), line.x()), a);
 
   // The épée on the line from the shoulder to the chest, arm straight.
   point_arm(o, a, Arm::Right,

@@ -12,8 +12,8 @@
 #include <optional>
 
 #include "arm_control.h"
-#include "control/guard_footwork.h"
 #include "policies.h"
+#include "step_controller.h"
 
 namespace olympics::client {
 
@@ -22,25 +22,18 @@ class ScriptedFencingPolicy : public Policy {
   void start(const MatchInfo& match) override;
   void act(std::span<const float> observation, std::span<float> action) override;
 
-  // True from the front foot's leaving the ground in a lunge until the lunge's hold ends: a
-  // touch scored then came from a lunge.
-  bool lunging() const;
-  int debug_stage() const { return legs_ ? 10 * (int)legs_->move() + (int)legs_->stage() : -1; }
-
  private:
   struct Blocks {  // where the observation's fields it reads start
-    int opponent = 0, opponent_velocity = 0, chest = 0, tip = 0, across = 0, to_my_end = 0;
+    int opponent = 0, chest = 0, to_my_end = 0;
   };
-  using Move = control::GuardFootwork::Move;
-  Move choose(std::span<const float> observation);
+  enum class Phase { Approach, Attack, Recover };
 
   Blocks blocks_;
   double control_dt_ = 0;
-  std::optional<control::GuardFootwork> legs_;
+  std::optional<StepController> legs_;
   ArmDirection arm_{Arm::Right};
-  double in_guard_s_ = 0;  // time at guard distance since the last attack
-  bool attacking_ = false;
-  double last_distance_ = 0;  // root to root a tick ago
+  Phase phase_ = Phase::Approach;
+  double phase_s_ = 0;
 };
 
 }  // namespace olympics::client
