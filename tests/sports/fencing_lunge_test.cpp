@@ -25,7 +25,8 @@ struct BoutCount {
 };
 
 // Two scripted fencers on `seed` for at most `seconds`: touches by the tip (a double counts
-// each fencer's), how many the scorer made while lunging, lunges launched, falls.
+// each fencer's, as the bench does), how many the scorer made while lunging, lunges launched,
+// falls.
 BoutCount play(std::uint64_t seed, double seconds, bool trace = false) {
   auto match = sports::sport_or_throw("fencing").create({"1v1", seed, 0.0, {}});
   const auto layout = ObservationLayout::from_blocks(match->layout().observation);
@@ -74,12 +75,10 @@ BoutCount play(std::uint64_t seed, double seconds, bool trace = false) {
       count.falls += call == "fall";
       if (call == "fall") count.falls_near_lunge += tick - lunge_tick[ev.value("slot", 0)] < 45;
       if (call != "point" || ev.value("reason", "") == "fall") continue;
-      const bool both = ev.value("reason", "") == "double";
-      for (int s = 0; s < 2; ++s) {
-        if (!both && ev.value("slot", -1) != s) continue;
-        ++count.touches;
-        count.lunge_touches += players[s].lunging();
-      }
+      // One call per scoring fencer (a double: one for each).
+      const int s = ev.value("slot", 0);
+      ++count.touches;
+      count.lunge_touches += players[s].lunging();
     }
   }
   count.seconds = tick / 30.0;
