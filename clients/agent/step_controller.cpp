@@ -133,7 +133,6 @@ void StepController::act(std::span<const float> o, const Eigen::Vector2d& target
   const double remaining = g.step_s - phase_s_;
   Eigen::Vector2d foot = v * (remaining + g.lead_s) + g.velocity_gain * (v - desired_v);
   foot.y() += side * g.stance_width;
-  foot.x() -= 0.5 * side * g.stagger;  // side +1: the left foot, behind
   // Moving sideways, the foot on the side of the motion leads; side_step moves where it lands.
   const bool leads = side * desired_v.y() > 0;
   if (leads) foot.y() += g.side_step * desired_v.y();

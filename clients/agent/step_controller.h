@@ -56,9 +56,6 @@ struct StepGains {
   // The lead foot (the one on the side moved toward) lands this much further out per m/s asked
   // sideways, s; negative: nearer the body, which keeps it accelerating that way.
   double side_step = 0;
-  // A fencing guard's staggered feet: the right foot lands this much ahead of the left one
-  // (half ahead of where the balance rule puts it, the left half behind), m; 0: side by side.
-  double stagger = 0;
 };
 
 // A faster sideways gait, `base` otherwise: 0.2 s steps, 0.6 m side steps, the lead foot
@@ -87,15 +84,6 @@ class StepController {
            std::span<float> action);
 
   bool stepping() const { return stepping_; }
-  // Starts stepping now with `left` swinging first (taking over legs another motion left with
-  // the weight on the other foot, as after a lunge).
-  void start_stepping(std::span<const float> observation, bool left) {
-    stepping_ = true;
-    begin_step(observation, left);
-  }
-  // Which foot swings now, and how far into its step (0 at lift-off, 1 at the step's end).
-  bool left_swings() const { return left_swings_; }
-  double step_progress() const { return phase_s_ / gains_.step_s; }
 
   // The swing foot's clearance from the next step on (stepping over something low).
   void set_lift(double metres) { gains_.lift = metres; }
