@@ -3,7 +3,6 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <stdexcept>
 
 #include "arm_control.h"
@@ -36,50 +35,6 @@ constexpr double kGuardForward = 0.6;           // the guard's upper arm: forwar
 constexpr double kPunchEvery_s = 0.6;           // a punch, then the other hand
 constexpr double kPunchFor_s = 0.25;            // the arm out, then back to the guard
 
-double tune(const char* name, double fallback) {  // TUNING ONLY
-  const char* v = std::getenv(name);
-  return v ? std::atof(v) : fallback;
-}
-struct Tuned {
-  double range, in_range, plant_within, plant_facing, plant_speed, replant_beyond, replant_facing;
-  double lean, twist, face_twist, reach_margin, every, for_s, target_mode, through, min_throw,
-      hip_turn, foot_frame, unplant_speed, com_ahead, ankle_p, ankle_d;
-};
-Tuned tuned() {
-  return {tune("B_RANGE", kRange_m),
-          tune("B_INRANGE", kInRange_m),
-          tune("B_PWITHIN", kPlantWithin_m),
-          tune("B_PFACING", kPlantFacing),
-          tune("B_PSPEED", kPlantSpeed),
-          tune("B_RBEYOND", kReplantBeyond_m),
-          tune("B_RFACING", kReplantFacing),
-          tune("B_LEAN", 0),
-          tune("B_TWIST", 0),
-          tune("B_FACETWIST", 0),
-          tune("B_REACH", 99),
-          tune("B_EVERY", kPunchEvery_s),
-          tune("B_FOR", kPunchFor_s),
-          tune("B_TARGET", 0),
-          tune("B_THROUGH", 0),
-          tune("B_MINTHROW", 0),
-          tune("B_HIPTURN", 0),
-          tune("B_FOOTFRAME", 0),
-          tune("B_UNPLANTV", 99),
-          tune("B_COMAHEAD", 0),
-          tune("B_ANKLEP", kAnkleP),
-          tune("B_ANKLED", kAnkleD)};
-}
-const Tuned& T() {
-  static const Tuned t = tuned();
-  return t;
-}
-// Spine, torso and chest share a rotation about their y (pitch, + leans forward) or z (+ turns
-// left) axis.
-void trunk(std::span<float> a, int axis, double radians) {
-  for (int j : {int(kTorso), kTorso + 1, int(kChest)})
-    set_joint(a, j, axis, joint_angle(a, j, axis) + radians / 3);
-}
-
 void guard(std::span<const float> o, std::span<float> a, Arm arm) {
   const double side = arm == Arm::Right ? -1 : 1;
   point_arm(o, a, arm, {kGuardForward, 0.45 * side, -0.7},
@@ -101,15 +56,8 @@ bool feet_down(std::span<const float> o) {
 // Both feet planted where they stand, knees bent, each leg's hip drive holding the pelvis upright
 // over its foot (the stepping controller's stance leg, twice), and the ankles balancing the
 // centre of mass (`com`, heading frame from the root) over the middle of the feet.
-double foot_yaw(std::span<const float> o, int ankle) {
-  const Eigen::Vector3d x = body_rotation(o, ankle).col(0);
-  return std::atan2(x.y(), x.x());
-}
-
-void plant(std::span<const float> o, std::span<float> a, const Eigen::Vector3d& com,
-           double bearing) {
+void plant(std::span<const float> o, std::span<float> a, const Eigen::Vector3d& com) {
   const Eigen::Vector3d up = body_rotation(o, kPelvis).col(2);
-  const double turn_to = T().hip_turn * bearing;
   for (int hip : {kLHip, kRHip}) {
     Eigen::Vector3d r = body_position(o, hip + 2) - body_position(o, hip);
     const double leg_sq = kPlantedLeg_m * kPlantedLeg_m;
@@ -118,20 +66,13 @@ void plant(std::span<const float> o, std::span<float> a, const Eigen::Vector3d& 
     set_joint(a, hip, 0, joint_angle(a, hip, 0) - kUpright * up.y());
     set_joint(a, hip, 1, joint_angle(a, hip, 1) + kUpright * up.x());
     write_flat_foot(o, a, hip + 1);
-    if (T().hip_turn > 0)  // the pelvis turned on the planted feet toward the opponent
-      set_joint(a, hip, 2, std::clamp(foot_yaw(o, hip + 2) - turn_to, -0.5, 0.5));
   }
   const Eigen::Vector3d mid = 0.5 * (body_position(o, kLAnkle) + body_position(o, kRAnkle));
   const Eigen::Vector3d v = root_velocity(o);
-  const double dx = com.x() - mid.x() - T().com_ahead, dy = com.y() - mid.y();
-  const double kAnkleP = T().ankle_p, kAnkleD = T().ankle_d;
+  const double dx = com.x() - mid.x(), dy = com.y() - mid.y();
   for (int ankle : {kLAnkle, kRAnkle}) {
-    // The error in the foot's own frame (the pelvis may be turned on the feet).
-    const double f = T().foot_frame > 0 ? foot_yaw(o, ankle) : 0, c = std::cos(f), s = std::sin(f);
-    const double ex = c * (kAnkleP * dx + kAnkleD * v.x()) + s * (kAnkleP * dy + kAnkleD * v.y());
-    const double ey = -s * (kAnkleP * dx + kAnkleD * v.x()) + c * (kAnkleP * dy + kAnkleD * v.y());
-    set_joint(a, ankle, 1, joint_angle(a, ankle, 1) + ex);
-    set_joint(a, ankle, 0, joint_angle(a, ankle, 0) - ey);
+    set_joint(a, ankle, 1, joint_angle(a, ankle, 1) + kAnkleP * dx + kAnkleD * v.x());
+    set_joint(a, ankle, 0, joint_angle(a, ankle, 0) - (kAnkleP * dy + kAnkleD * v.y()));
   }
 }
 
@@ -147,8 +88,7 @@ void ScriptedBoxingPolicy::start(const MatchInfo& match) {
     throw std::invalid_argument("the scripted boxing policy plays boxing, not " + match.sport);
   const ObservationLayout& l = match.observation;
   blocks_ = {l.offset("opponent_root", "position"), l.offset("opponent_targets", "chest"),
-             l.offset("opponent_targets", "head"), l.offset("bout", "resting"),
-             l.offset("opponent_targets", "spine")};
+             l.offset("opponent_targets", "head"), l.offset("bout", "resting")};
   control_dt_ = match.control_dt;
   gains_ = StepGains();
   gains_.turn_start = 0.3;  // keep facing the opponent, stepping in place if need be
@@ -172,8 +112,7 @@ void ScriptedBoxingPolicy::act(std::span<const float> o, std::span<float> a) {
   const Eigen::Vector2d towards =
       distance > 1e-6 ? Eigen::Vector2d(line / distance) : Eigen::Vector2d(1, 0);
   const double bearing = std::atan2(line.y(), line.x());
-  const Tuned& k = T();
-  const double off = distance - k.range;
+  const double off = distance - kRange_m;
 
   if (resting != was_resting_) {  // the bell: both boxers were put back in their corners
     planted_ = false;
@@ -182,51 +121,34 @@ void ScriptedBoxingPolicy::act(std::span<const float> o, std::span<float> a) {
   }
   if (resting) {
   } else if (planted_) {
-    if ((std::abs(off) > k.replant_beyond || std::abs(bearing) > k.replant_facing) &&
-        root_velocity(o).head<2>().norm() < k.unplant_speed) {
+    if (std::abs(off) > kReplantBeyond_m || std::abs(bearing) > kReplantFacing) {
       planted_ = false;
       legs_.emplace(gains_, control_dt_);  // a fresh step from both feet down
     }
-  } else if (std::abs(off) < k.plant_within && std::abs(bearing) < k.plant_facing && feet_down(o) &&
-             root_velocity(o).head<2>().norm() < k.plant_speed) {
+  } else if (std::abs(off) < kPlantWithin_m && std::abs(bearing) < kPlantFacing && feet_down(o) &&
+             root_velocity(o).head<2>().norm() < kPlantSpeed) {
     planted_ = true;
   }
   if (planted_)
-    plant(o, a, smpl_model().centre_of_mass(smpl_model().pose_from_observation(o)), bearing);
+    plant(o, a, smpl_model().centre_of_mass(smpl_model().pose_from_observation(o)));
   else if (resting)
     legs_->act(o, Eigen::Vector2d::Zero(), 0, a);
   else
     legs_->act(o, towards * off * kGapShare, bearing, a);
-  if (planted_ && k.face_twist > 0) trunk(a, 2, std::clamp(k.face_twist * bearing, -0.6, 0.6));
 
   guard(o, a, Arm::Left);
   guard(o, a, Arm::Right);
-  punching_.reset();
-  if (resting || !planted_ || distance > k.in_range) {
+  if (resting || !planted_ || distance > kInRange_m) {
     clock_s_ = 0;
     return;
   }
   clock_s_ += control_dt_;
-  const double into = std::fmod(clock_s_, k.every);
-  const int n = static_cast<int>(clock_s_ / k.every);
-  if (into > k.for_s) return;
+  const double into = std::fmod(clock_s_, kPunchEvery_s);
+  const int n = static_cast<int>(clock_s_ / kPunchEvery_s);
+  if (into > kPunchFor_s) return;
   const Arm arm = n % 2 == 0 ? Arm::Left : Arm::Right;
-  const Eigen::Vector3d head = vec3(o, at.head), chest = vec3(o, at.chest);
-  Eigen::Vector3d target = n % 4 < 2 ? head : chest;
-  const Eigen::Vector3d shoulder = body_position(o, arm == Arm::Right ? kRShoulder : kLShoulder);
-  const Eigen::Vector3d spine = vec3(o, at.spine);
-  const int mode = static_cast<int>(k.target_mode);
-  if (mode == 1)  // the nearer of head and chest
-    target = (head - shoulder).norm() < (chest - shoulder).norm() ? head : chest;
-  if (mode == 2) target = spine;
-  if (mode == 3) target = chest;
-  if (mode == 4) target = n % 4 < 2 ? chest : spine;
-  if (distance < k.min_throw) return;
-  if ((target - shoulder).norm() > k.reach_margin) return;
-  if (k.lean != 0) trunk(a, 1, k.lean);
-  if (k.twist != 0) trunk(a, 2, arm == Arm::Right ? k.twist : -k.twist);
+  const Eigen::Vector3d target = vec3(o, n % 4 < 2 ? at.head : at.chest);
   punch(o, a, arm, target);
-  punching_ = arm;
 }
 
 std::unique_ptr<Policy> make_scripted_boxing() { return std::make_unique<ScriptedBoxingPolicy>(); }

@@ -13,7 +13,6 @@
 
 #include <optional>
 
-#include "arm_control.h"
 #include "policies.h"
 #include "step_controller.h"
 
@@ -24,14 +23,9 @@ class ScriptedBoxingPolicy : public Policy {
   void start(const MatchInfo& match) override;
   void act(std::span<const float> observation, std::span<float> action) override;
 
-  // What the last act() did, for tests and diagnostics: planted, and the arm it threw (if any).
-  bool planted() const { return planted_; }
-  std::optional<Arm> punching() const { return punching_; }
-  bool stepping() const { return legs_ && legs_->stepping(); }  // DIAG
-
  private:
   struct Blocks {  // where the observation's fields it reads start
-    int opponent = 0, chest = 0, head = 0, resting = 0, spine = 0;
+    int opponent = 0, chest = 0, head = 0, resting = 0;
   };
   Blocks blocks_;
   double control_dt_ = 0;
@@ -40,7 +34,6 @@ class ScriptedBoxingPolicy : public Policy {
   bool planted_ = false;      // both feet down where they stand, punching
   bool was_resting_ = false;  // to see the bell
   double clock_s_ = 0;        // time in range, for the punches' rhythm
-  std::optional<Arm> punching_;
 };
 
 }  // namespace olympics::client
