@@ -1,5 +1,6 @@
 // The scripted fencer and boxer on fixed seeds: most of the fencer's exchanges end with a touch
-// by the tip rather than a fall, and the boxer's punches reach the head or the chest.
+// by the tip rather than a fall; the boxer stays up through most first rounds and throws its
+// punches at the chest, within reach, with the trunk leaning and turned into them.
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
