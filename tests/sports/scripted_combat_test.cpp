@@ -84,7 +84,9 @@ TEST(ScriptedFencingPolicy, FencersStayUpThroughTheirFirstHalfMinutes) {
 TEST(ScriptedBoxingPolicy, MostBoutsGoThroughTheFirstRoundWithoutAKnockDown) {
   // Eight bouts' first round (60 s): most go through it without either boxer down. The boxer
   // walks into range and plants both feet to punch; the previous one (punching as it stepped)
-  // was knocked down in every one of these rounds. Now: 6 clean rounds of 8. (This test also
+  // was knocked down in every one of these rounds. Now: 5 clean rounds of 8 (6 with the punch
+  // at the head and the chest before issue 30's third round: one seed's round differs, within
+  // the noise of the unseen figures, docs/combat-sports.md). (This test also
   // wanted 3 scoring punches a clean round: those were guard gloves pressed on a head, which no
   // longer score: the scripted boxer's punches rarely land, docs/combat-sports.md.)
   int clean_rounds = 0;
