@@ -34,12 +34,28 @@ constexpr double kGuardElbow = 1.8;             // rad
 constexpr double kGuardForward = 0.6;           // the guard's upper arm: forward, out and down
 constexpr double kPunchEvery_s = 0.6;           // a punch, then the other hand
 constexpr double kPunchFor_s = 0.25;            // the arm out, then back to the guard
+// The punch goes to the chest, under the other's guard gloves (at the head, most punches met a
+// glove first), with the trunk leaning forward and turning the punching shoulder forward while
+// the arm is out: from where the guards do not touch, a straight arm alone falls short. A punch
+// whose target is beyond reach even so is not thrown (the arm stays in guard).
+constexpr double kPunchLean = 0.4;     // rad, the trunk pitched forward
+constexpr double kPunchTurn = 0.4;     // rad, the trunk turned about the spine
+constexpr double kPunchReach_m = 0.9;  // shoulder to the chest's centre, at most
 
 void guard(std::span<const float> o, std::span<float> a, Arm arm) {
   const double side = arm == Arm::Right ? -1 : 1;
   point_arm(o, a, arm, {kGuardForward, 0.45 * side, -0.7},
             arm == Arm::Right ? M_PI / 2 : -M_PI / 2);
   bend_elbow(a, arm, kGuardElbow);
+}
+
+// The torso, spine and chest, a third each: pitched forward by `lean` and turned by `turn`
+// (left positive) from upright.
+void bend_trunk(std::span<float> a, double lean, double turn) {
+  for (int joint : {int(kTorso), kTorso + 1, int(kChest)}) {
+    set_joint(a, joint, 1, joint_angle(a, joint, 1) + lean / 3);
+    set_joint(a, joint, 2, joint_angle(a, joint, 2) + turn / 3);
+  }
 }
 
 void punch(std::span<const float> o, std::span<float> a, Arm arm, const Eigen::Vector3d& at) {
@@ -88,7 +104,7 @@ void ScriptedBoxingPolicy::start(const MatchInfo& match) {
     throw std::invalid_argument("the scripted boxing policy plays boxing, not " + match.sport);
   const ObservationLayout& l = match.observation;
   blocks_ = {l.offset("opponent_root", "position"), l.offset("opponent_targets", "chest"),
-             l.offset("opponent_targets", "head"), l.offset("bout", "resting")};
+             l.offset("bout", "resting")};
   control_dt_ = match.control_dt;
   gains_ = StepGains();
   gains_.turn_start = 0.3;  // keep facing the opponent, stepping in place if need be
@@ -147,7 +163,10 @@ void ScriptedBoxingPolicy::act(std::span<const float> o, std::span<float> a) {
   const int n = static_cast<int>(clock_s_ / kPunchEvery_s);
   if (into > kPunchFor_s) return;
   const Arm arm = n % 2 == 0 ? Arm::Left : Arm::Right;
-  const Eigen::Vector3d target = vec3(o, n % 4 < 2 ? at.head : at.chest);
+  const Eigen::Vector3d target = vec3(o, at.chest);
+  const Eigen::Vector3d shoulder = body_position(o, arm == Arm::Right ? kRShoulder : kLShoulder);
+  if ((target - shoulder).norm() > kPunchReach_m) return;
+  bend_trunk(a, kPunchLean, arm == Arm::Right ? kPunchTurn : -kPunchTurn);  // shoulder forward
   punch(o, a, arm, target);
 }
 

@@ -6,8 +6,9 @@
 //   with the ankles; it steps again only when the distance or the opponent's bearing drifts;
 // - it holds a guard: upper arms forward and down, elbows bent, gloves up before the chin;
 // - planted and in range it punches (never from a step): left jab and right cross in turn, each arm
-// thrown straight at the
-//   opponent's head or chest and drawn back to the guard;
+//   thrown straight at the opponent's chest, under its guard, with the trunk leaning into the
+//   punch and turning the punching shoulder forward, and drawn back to the guard; a punch that
+//   would not reach even so is not thrown;
 // - it stands still during the rest between rounds.
 #pragma once
 
@@ -25,7 +26,7 @@ class ScriptedBoxingPolicy : public Policy {
 
  private:
   struct Blocks {  // where the observation's fields it reads start
-    int opponent = 0, chest = 0, head = 0, resting = 0;
+    int opponent = 0, chest = 0, resting = 0;
   };
   Blocks blocks_;
   double control_dt_ = 0;

@@ -1,7 +1,10 @@
 // The scripted fencer and boxer on fixed seeds: most of the fencer's exchanges end with a touch
-// by the tip rather than a fall, and the boxer's punches reach the head or the chest.
+// by the tip rather than a fall; the boxer stays up through most first rounds and throws its
+// punches at the chest, within reach, with the trunk leaning and turned into them.
 #include <gtest/gtest.h>
 
+#include <Eigen/Core>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -10,6 +13,7 @@
 #include "registry.h"
 #include "scripted_boxing.h"
 #include "scripted_fencing.h"
+#include "smpl_observation.h"
 
 namespace olympics::client {
 namespace {
@@ -80,7 +84,9 @@ TEST(ScriptedFencingPolicy, FencersStayUpThroughTheirFirstHalfMinutes) {
 TEST(ScriptedBoxingPolicy, MostBoutsGoThroughTheFirstRoundWithoutAKnockDown) {
   // Eight bouts' first round (60 s): most go through it without either boxer down. The boxer
   // walks into range and plants both feet to punch; the previous one (punching as it stepped)
-  // was knocked down in every one of these rounds. Now: 6 clean rounds of 8. (This test also
+  // was knocked down in every one of these rounds. Now: 5 clean rounds of 8 (6 with the punch
+  // at the head and the chest before issue 30's third round: one seed's round differs, within
+  // the noise of the unseen figures, docs/combat-sports.md). (This test also
   // wanted 3 scoring punches a clean round: those were guard gloves pressed on a head, which no
   // longer score: the scripted boxer's punches rarely land, docs/combat-sports.md.)
   int clean_rounds = 0;
@@ -91,6 +97,51 @@ TEST(ScriptedBoxingPolicy, MostBoutsGoThroughTheFirstRoundWithoutAKnockDown) {
     clean_rounds += !knocked_down;
   }
   EXPECT_GE(clean_rounds, 5) << "of 8 first rounds without a knock-down";
+}
+
+TEST(ScriptedBoxingPolicy, PunchesAtTheChestWithTheTrunkInThemAndOnlyWithinReach) {
+  // Every punch the boxer throws in the first minute of 16 bouts (an arm straightened out of
+  // the guard): at the opponent's chest, under its guard, never at a chest further than 0.9 m
+  // from the shoulder, with the trunk (torso, spine, chest) pitched forward 0.4 rad and the
+  // punching shoulder turned forward 0.4 rad. Main's boxer threw at the head and the chest in
+  // turn with the trunk upright, from as far as 1.1 m root to root: 34 of its 82 punches on
+  // seeds 1-40 fell short and 40 met the other's glove first (docs/combat-sports.md).
+  int throws = 0, beyond_reach = 0, upright = 0;
+  for (std::uint64_t seed = 1; seed <= 16; ++seed) {
+    auto match = sports::sport_or_throw("boxing").create({"1v1", seed, 0.0, {}});
+    const auto layout = ObservationLayout::from_blocks(match->layout().observation);
+    const int chest = layout.offset("opponent_targets", "chest");
+    ScriptedBoxingPolicy players[2];
+    for (auto& p : players) p.start({"boxing", "1v1", core::kControlDt, layout, 69});
+    std::vector<float> obs[2] = {std::vector<float>(match->obs_size()),
+                                 std::vector<float>(match->obs_size())};
+    std::vector<float> act[2] = {std::vector<float>(69), std::vector<float>(69)};
+    for (int tick = 0; tick < 60 * 30 && !match->outcome().match_over; ++tick) {
+      for (int s = 0; s < 2; ++s) {
+        match->observe(s, obs[s]);
+        players[s].act(obs[s], act[s]);
+        for (int elbow : {smpl::kLElbow, smpl::kRElbow}) {
+          if (std::abs(smpl::joint_angle(act[s], elbow, 2)) > 0.5) continue;  // guard: 1.8
+          ++throws;
+          const int shoulder = elbow == smpl::kRElbow ? smpl::kRShoulder : smpl::kLShoulder;
+          const Eigen::Vector3d to_chest =
+              smpl::vec3(obs[s], chest) - smpl::body_position(obs[s], shoulder);
+          beyond_reach += to_chest.norm() > 0.9;
+          double pitch = 0, turn = 0;
+          for (int j : {int(smpl::kTorso), smpl::kTorso + 1, int(smpl::kChest)}) {
+            pitch += smpl::joint_angle(act[s], j, 1);
+            turn += smpl::joint_angle(act[s], j, 2);
+          }
+          const double forward = elbow == smpl::kRElbow ? 0.4 : -0.4;
+          upright += std::abs(pitch - 0.4) > 0.01 || std::abs(turn - forward) > 0.01;
+        }
+      }
+      match->step({std::span<const float>(act[0]), std::span<const float>(act[1])});
+    }
+  }
+  EXPECT_GE(throws, 20) << "ticks with an arm thrown (29 here: a punch is out 8 ticks)";
+  EXPECT_EQ(beyond_reach, 0) << "of " << throws << " thrown at a chest beyond 0.9 m";
+  EXPECT_EQ(upright, 0) << "of " << throws << " thrown without the trunk leaning and turned";
 }
 
 }  // namespace
