@@ -10,6 +10,7 @@
 #include "registry.h"
 #include "scripted_basketball_dribble.h"
 #include "scripted_basketball_team.h"
+#include "two_policy_tick.h"
 
 namespace olympics::client {
 namespace {
@@ -88,12 +89,7 @@ Episode dribble_at_the_check_ball(std::uint64_t seed, double seconds) {
   Episode e;
   std::vector<float> obs[2], act[2];
   for (int tick = 0; tick < seconds * 30 && !m->outcome().match_over; ++tick) {
-    for (int s = 0; s < 2; ++s) {
-      obs[s].resize(m->obs_size()), act[s].resize(m->action_size());
-      m->observe(s, obs[s]);
-      players[s]->act(obs[s], act[s]);
-    }
-    m->step({std::span<const float>(act[0]), std::span<const float>(act[1])});
+    sports::two_policy_tick(*m, players, obs, act);
     if (m->outcome().info.contains("events"))
       for (const auto& ev : m->outcome().info["events"])
         if (ev.value("call", "") == "fall" && ev.value("slot", -1) == dribbler) e.fell = true;

@@ -13,6 +13,7 @@
 #include "policies.h"
 #include "registry.h"
 #include "scripted_basketball_team.h"
+#include "two_policy_tick.h"
 
 namespace olympics::sports::basketball {
 namespace {
@@ -41,12 +42,7 @@ FirstPossession play_first_possession(std::uint64_t seed) {
   std::vector<float> obs[2], act[2];
   FirstPossession f;
   for (int tick = 0; tick < 3 * 30 && !m->outcome().match_over; ++tick) {
-    for (int s = 0; s < 2; ++s) {
-      obs[s].resize(m->obs_size()), act[s].resize(m->action_size());
-      m->observe(s, obs[s]);
-      players[s]->act(obs[s], act[s]);
-    }
-    m->step({std::span<const float>(act[0]), std::span<const float>(act[1])});
+    two_policy_tick(*m, players, obs, act);
     const Vector3d ball = b.ball().position(), v = b.ball().velocity();
     const Vector2d towards = (rim - ball).head<2>().normalized();
     f.top = std::max(f.top, ball.z());
@@ -99,12 +95,7 @@ TEST(ScriptedBasketballTeam, AScripted1v1ScoresFromTheCheckBall) {
   for (auto& p : players) p->start(info);
   std::vector<float> obs[2], act[2];
   for (int tick = 0; tick < 120 * 30 && !m->outcome().match_over; ++tick) {
-    for (int s = 0; s < 2; ++s) {
-      obs[s].resize(m->obs_size()), act[s].resize(m->action_size());
-      m->observe(s, obs[s]);
-      players[s]->act(obs[s], act[s]);
-    }
-    m->step({std::span<const float>(act[0]), std::span<const float>(act[1])});
+    two_policy_tick(*m, players, obs, act);
   }
   const auto& score = b.referee().score();
   std::printf("seed 1, 120 s: %d-%d\n", score[0], score[1]);
@@ -156,12 +147,7 @@ TEST(ScriptedBasketballTeam, DISABLED_GameProbe) {
     points_before = points;
   };
   for (int tick = 0; tick < seconds * 30 && !m->outcome().match_over; ++tick) {
-    for (int s = 0; s < 2; ++s) {
-      obs[s].resize(m->obs_size()), act[s].resize(m->action_size());
-      m->observe(s, obs[s]);
-      players[s]->act(obs[s], act[s]);
-    }
-    m->step({std::span<const float>(act[0]), std::span<const float>(act[1])});
+    two_policy_tick(*m, players, obs, act);
     const double now = tick / 30.0;
     if (b.presenting() && !was_presenting) {
       if (tick > 0) report(now);
