@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "equipment/ball.h"
+
 namespace olympics::client {
 namespace {
 
@@ -13,6 +15,11 @@ constexpr double kMaxSpeed = 40;
 
 double drag_per_mass(double radius_m, double mass_kg, double drag_coefficient) {
   return 0.5 * kAirDensity * drag_coefficient * M_PI * radius_m * radius_m / mass_kg;
+}
+
+double basketball_drag_per_mass() {
+  const sports::equipment::BallSpec ball = sports::equipment::basketball();
+  return drag_per_mass(ball.radius, ball.mass, ball.drag_coefficient);
 }
 
 double carry_to_height(double speed, double elevation, double rise, double drag, double step_s) {

@@ -8,6 +8,8 @@ namespace olympics::client {
 // Drag deceleration per (m/s)^2 of a ball: 1/2 rho Cd A / m (SPORTS.md's balls, air 1.2 kg/m^3).
 // The server adds the same force before every physics step (sports/equipment/ball.h).
 double drag_per_mass(double radius_m, double mass_kg, double drag_coefficient);
+// ...of the basketball the server plays with (sports/equipment/ball.cpp).
+double basketball_drag_per_mass();
 
 // The server's physics step (DESIGN.md: 120 Hz). The flight is integrated as ODE does it
 // (velocity first, then position with the new velocity; drag from the velocity at the step's

@@ -62,8 +62,8 @@ struct FreeThrowShot {
                                       {1.9, 6.49, 0.463, 0.556}, {2.1, 6.71, 0.491, 0.590},
                                       {2.3, 7.00, 0.459, 0.544}, {2.4, 7.17, 0.428, 0.449},
                                       {2.5, 7.41, 0.425, 0.447}, {2.6, 7.53, 0.433, 0.457}};
-  double launch_elevation = 60 * M_PI / 180;          // rad: the ball's direction at the release
-  double ball_drag = drag_per_mass(0.12, 0.60, 0.5);  // the basketball's (SPORTS.md)
+  double launch_elevation = 60 * M_PI / 180;  // rad: the ball's direction at the release
+  double ball_drag = basketball_drag_per_mass();
   double fixed_elevation = NAN;  // set: swing there whatever the aim says (measuring `swing`)
   double aim_offset = 0.008;     // rad added to the rim's bearing (the swing pulls aside)
   double shot_elbow = 0.492;     // rad: the elbows in the swing

@@ -10,17 +10,19 @@
 #include "control/minimum_jerk.h"
 #include "control/smplx_limbs.h"
 #include "control/standing_balance.h"
+#include "equipment/ball.h"
 #include "smplx_observation.h"
 
 namespace olympics::client {
 namespace {
 
 constexpr double kGravity = 9.81;
-// The basketball (SPORTS.md, sports/equipment/ball.cpp): radius, restitution, drag.
-constexpr double kBallRadius = 0.12, kBallRestitution = 0.795;
-const double kBallDrag = drag_per_mass(0.12, 0.60, 0.5);
+// The basketball the server plays with (sports/equipment/ball.cpp): radius, restitution, drag.
+const sports::equipment::BallSpec kBall = sports::equipment::basketball();
+const double kBallRadius = kBall.radius, kBallRestitution = kBall.restitution;
+const double kBallDrag = basketball_drag_per_mass();
 // From the palm box's centre to the ball's centre when the palm touches the top of the ball.
-constexpr double kPalmOverBall = kBallRadius + control::kSmplxPalmHalfThickness;
+const double kPalmOverBall = kBallRadius + control::kSmplxPalmHalfThickness;
 constexpr double kHorizon_s = 1.2;
 constexpr int kLeftAnkle = 3, kRightAnkle = 7;  // SMPL-X bodies
 

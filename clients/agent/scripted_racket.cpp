@@ -527,7 +527,7 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
     // In doubles the partner whose ball it is not steps back out of the striker's way (tennis;
     // table tennis stands still); the partners' marks are staggered, the left one nearer the net.
     double back = doubles_ && team_coming ? play.doubles_step_back : 0;
-    if (doubles_) back += (home_y > 0 ? -1 : 1) * sport_->game.partner_stagger;
+    if (doubles_) back -= sport_->game.partner_forward(home_y > 0);
     walk = Eigen::Vector3d(play.home_x - back, home_y, 0) - court.root;
   }
   walk.z() = 0;

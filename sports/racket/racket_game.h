@@ -35,6 +35,8 @@ struct RacketGame {
   // the one on the right this much further back: side by side, their arms (the rest pose's, held
   // out level) would overlap.
   double partner_stagger = 0;
+  // ...so a partner stands this much nearer the net than player_x (negative: further back).
+  double partner_forward(bool left) const { return left ? partner_stagger : -partner_stagger; }
 
   // Ball return: launched from x = launch_x on the far side (y in +-launch_y, z launch_z) with
   // horizontal speed in [launch_speed_lo, hi] to a landing point uniform on the player's half.

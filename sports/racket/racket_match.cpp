@@ -158,7 +158,7 @@ core::RootPlacement RacketMatch::start_placement(int slot) const {
   }
   double x = config_.game.player_x;
   if (config_.mode == RacketMode::Doubles)  // -side * y: its y as it faces the net, left +
-    x += (-side * y > 0 ? -1 : 1) * config_.game.partner_stagger;
+    x -= config_.game.partner_forward(-side * y > 0);
   // Facing the net: team 0 (at -x) looks along +x, team 1 along -x.
   return {{side * x, y, 0}, side < 0 ? 0.0 : M_PI};
 }
