@@ -191,6 +191,11 @@ void RacketMatch::start_point() {
       return toss();
     }
   }
+  feed(receiving_team, fed_slot);
+}
+
+void RacketMatch::feed(int receiving_team, int fed_slot) {
+  fed_slot_ = fed_slot;
   referee_.start_point(receiving_team, fed_slot, time());
   referee_events_seen_ = 0;
   for (int i = 0; i < slot_count(); ++i) {
@@ -203,10 +208,10 @@ void RacketMatch::start_point() {
     launch = ball_return_launch(config_.game, 0, rng());
   } else {
     const double receiver_y = start_placement(fed_slot).position.y();
-    launch =
-        config_.feed_to_player
-            ? feed_to_player_launch(config_.game, receiving_team, receiver_y, rng())
-            : feed_launch(config_.game, receiving_team, receiver_y >= 0 ? 1 : -1, doubles, rng());
+    launch = config_.feed_to_player
+                 ? feed_to_player_launch(config_.game, receiving_team, receiver_y, rng())
+                 : feed_launch(config_.game, receiving_team, receiver_y >= 0 ? 1 : -1,
+                               config_.mode == RacketMode::Doubles, rng());
   }
   flight_.set_state(launch.position, launch.velocity);
 }
@@ -321,6 +326,12 @@ void RacketMatch::probe_bodies(const Eigen::Vector3d& from, double t) {
                                                      touch->normal, 0.3, 0.5));
 }
 
+void RacketMatch::log_referee_calls() {
+  const auto& calls = referee_.events();
+  for (; referee_events_seen_ < calls.size(); ++referee_events_seen_)
+    log(calls[referee_events_seen_]);
+}
+
 void RacketMatch::settle_tick() {
   // Rewards for this tick, before a finished point resets anything.
   const RacketGame& g = config_.game;
@@ -345,12 +356,15 @@ void RacketMatch::settle_tick() {
   const bool both_fell =
       scoreboard_ && fallen_slot[0] >= 0 && fallen_slot[1] >= 0 && !referee_.call();
   if (both_fell && !config_.serve) {
-    // The feed's let feeds the next ball as a new point (kept so: the default start's matches
-    // stay bit-identical).
-    nlohmann::json let = referee_event("let", time());
+    // The point is played again: the tick's calls so far, the let, and the same player fed again
+    // from where the players stand at a point's start (in doubles, not the partner whose turn
+    // the next point is).
+    log_referee_calls();
+    nlohmann::json let = referee_event("let", time(), fed_slot_);
     let["reason"] = "both sides fell";
     log(std::move(let));
-    start_point();
+    for (int i = 0; i < slot_count(); ++i) reset_player(i, start_placement(i));
+    feed(teams()[fed_slot_], fed_slot_);
   } else if (both_fell) {
     referee_.let("both sides fell", time());  // the same server tosses again, below
     faults_ = 0;  // the whole point is replayed, from the first serve (ITF rule 23, case 1)
@@ -359,9 +373,7 @@ void RacketMatch::settle_tick() {
       if (fallen_slot[team] >= 0) referee_.concede(team, fallen_slot[team], "fall");
   }
   referee_.check_stall(time(), config_.max_rally_s);
-  const auto& calls = referee_.events();
-  for (; referee_events_seen_ < calls.size(); ++referee_events_seen_)
-    log(calls[referee_events_seen_]);
+  log_referee_calls();
   if (referee_.replay() != RallyReferee::Replay::None) {  // a first fault or a let: serve again
     faults_ += referee_.replay() == RallyReferee::Replay::Fault;
     toss();

@@ -63,6 +63,8 @@ class RacketMatch : public SmplMatch {
   void extra_scene_poses(std::vector<float>& out) const override;
 
   void start_point();
+  void feed(int receiving_team, int fed_slot);  // the point's ball, launched to `fed_slot`
+  void log_referee_calls();                     // the referee's calls not yet in the log
   void toss();  // `start: "serve"`: a ball tossed for the server (again after a fault or a let)
   int doubles_member(int team);  // which partner of `team` takes this point's ball
   int receiver_y_sign() const;
@@ -87,6 +89,7 @@ class RacketMatch : public SmplMatch {
   std::vector<Eigen::Vector3d> reaction_;  // per slot: impulse on the hand for the next step
   std::vector<Eigen::Vector3d> reaction_at_;
   int served_points_ = 0;
+  int fed_slot_ = -1;                   // the feed: who this point's ball was launched to
   int serving_team_ = -1;               // `start: "serve"`: the team whose service turn this is
   std::array<int, 2> service_turns_{};  // ...and how many turns each team has begun
   int server_slot_ = -1;                // `start: "serve"`: who serves this point

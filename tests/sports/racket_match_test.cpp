@@ -163,6 +163,30 @@ TEST(RacketSports, ServedBothSidesFellLetKeepsTheServer) {
   }
 }
 
+// The feed (the default start), 2v2: all four players fall on the same tick. The let replays the
+// point: the same partner is fed again (the let names it), not the partner whose turn the next
+// point would be, and no point is called.
+TEST(RacketSports, FedBothSidesFellLetFeedsTheSamePlayerAgain) {
+  for (const auto& [name, a] : {std::pair{"tennis", 0.3f}, std::pair{"table_tennis", 1.0f}}) {
+    auto m = make(name, "2v2", 1);
+    std::vector<float> pose(69, a);
+    std::vector<std::span<const float>> acts(m->slot_count(), pose);
+    std::vector<int> fed_again;
+    for (int t = 0; t < 30 * 3 && fed_again.size() < 3; ++t) {
+      m->step(acts);
+      for (const auto& ev : m->outcome().info.value("events", nlohmann::json::array())) {
+        EXPECT_NE(ev.at("call"), "point") << name;
+        if (ev.at("call") != "let") continue;
+        EXPECT_EQ(ev.at("reason"), "both sides fell") << name;
+        ASSERT_TRUE(ev.contains("slot")) << name << ": the let does not say who is fed again";
+        fed_again.push_back(ev.at("slot"));
+      }
+    }
+    ASSERT_EQ(fed_again.size(), 3u) << name;
+    EXPECT_EQ(fed_again, std::vector<int>(3, fed_again.front())) << name;
+  }
+}
+
 // `start: "serve"`, 2v2, nobody swinging: every serve is lost, so the serve changes hands by the
 // rules alone. One partner serves the team's whole turn (tennis: a game of four points; table
 // tennis: two points) and the four players serve in the order A1, B1, A2, B2 (ITF rule 14; ITTF
