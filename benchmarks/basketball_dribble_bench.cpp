@@ -1,6 +1,7 @@
 #include "basketball_dribble_bench.h"
 
 #include <algorithm>
+#include <string>
 
 #include "basketball/basketball_match.h"
 #include "bench_support.h"
@@ -31,6 +32,7 @@ nlohmann::json scripted_dribbles(const std::vector<std::uint64_t>& seeds, double
     client::DribbleTally tally;
     bool fell = false;
     double fell_at = -1, lost_at = -1;
+    std::string fell_body;  // the body whose touch (or height) the referee called the fall on
     std::vector<float> obs[2], act[2];
     const double until = kPresent_s + seconds;
     while (!m->outcome().match_over && m->tick() * m->control_dt() < until) {
@@ -45,7 +47,7 @@ nlohmann::json scripted_dribbles(const std::vector<std::uint64_t>& seeds, double
         for (const auto& e : events["events"]) {
           const std::string call = e.value("call", "");
           if (call == "fall" && e.value("slot", -1) == dribbler) {
-            if (!fell) fell_at = m->tick() * m->control_dt();
+            if (!fell) fell_at = m->tick() * m->control_dt(), fell_body = e.value("body", "");
             fell = true, tally.lose();
           }
           if (call == "restart") tally.lose();  // out, shot clock: play stopped
@@ -65,6 +67,7 @@ nlohmann::json scripted_dribbles(const std::vector<std::uint64_t>& seeds, double
                           {"kept", !tally.lost()},
                           {"fell", fell},
                           {"fell_at_s", fell_at},
+                          {"fell_body", fell_body},
                           {"lost_at_s", lost_at},
                           {"push_speed", dribbling.dribble().push_speed()}});
   }
