@@ -215,7 +215,9 @@ void ScriptedDribbler::act(std::span<const float> o, std::span<float> a) {
                               control::kLoadedDriveSoftness * model_.gravity_torque(pose, b)));
   dribble_->drive(pose, smplx::vec3(o, ball_), smplx::vec3(o, ball_velocity_), -o[0], control_dt_,
                   a);
-  control::hold_standing_balance(model_, pose, smplx::vec3(o, smplx::kLinVel), a);
+  control::StandingGains balance;
+  balance.max_toes_down = params_.max_toes_down;
+  control::hold_standing_balance(model_, pose, smplx::vec3(o, smplx::kLinVel), a, balance);
   // The fingers curled into a cup over the ball: its rim pushes an off-centre ball back under
   // the palm.
   for (int f = 0; f < smplx::kLinksBeforeThumb; ++f)

@@ -52,6 +52,11 @@ struct DribbleParams {
   double palm_axis_weight_m = 0.03;
   double finger_curl = 0.6;    // rad per finger joint of the dribbling hand: a cup
   double gravity_scale = 2.0;  // of the arm's weight, compensated (drive_target.h)
+  // rad: the standing balance's ankle pitch capped at this much toes-down (StandingGains::
+  // max_toes_down). The reach carries the centre of mass 8-15 cm ahead of the ankles, where the
+  // balance's push lifts the heels; capped, the second dribble comes before the fall on most
+  // tuning seeds (docs/basketball.md, "The standing dribble, second round").
+  double max_toes_down = 0.25;
 };
 
 // One dribble's counters as the dribbler saw them.

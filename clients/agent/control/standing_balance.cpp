@@ -1,5 +1,7 @@
 #include "control/standing_balance.h"
 
+#include <algorithm>
+
 #include "control/drive_target.h"
 
 namespace olympics::client::control {
@@ -48,7 +50,9 @@ void hold_standing_balance(const BodyModel& model, const BodyPose& pose,
         pitch_torque += 0.5 * (g.forward_p * off.x() + g.forward_d * v.x());
         roll_target = -roll;
       }
-      write_joint(action, joint, from_euler_xyz({roll_target, pitch_torque / kp, 0}));
+      double pitch_target = pitch_torque / kp;
+      if (k == 2) pitch_target = std::min(pitch_target, g.max_toes_down);  // + is toes down
+      write_joint(action, joint, from_euler_xyz({roll_target, pitch_target, 0}));
     }
 }
 

@@ -12,6 +12,7 @@
 // strategy falls 4-7 s after each stand-up, the fixture's own 120 Hz gains sooner.
 #pragma once
 
+#include <limits>
 #include <span>
 
 #include "control/body_model.h"
@@ -25,6 +26,10 @@ struct StandingGains {
   double side_d = 0.5;     // rad per m/s
   double upright = 100;    // N·m per unit of the pelvis's tilt, hips
   double ahead = 0.03;     // m: the centre of mass held this far ahead of the ankles
+  // rad: the ankles' pitch target capped at this much toes-down (none by default). A player whose
+  // reach carries its centre of mass to the front of its feet may cap the push that would lift
+  // its heels (the standing dribble, docs/basketball.md).
+  double max_toes_down = std::numeric_limits<double>::infinity();
 };
 
 // Overwrites the hip, knee and ankle targets of `action` (SMPL or SMPL-X: their legs are bodies
