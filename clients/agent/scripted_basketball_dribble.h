@@ -1,8 +1,10 @@
-// A standing dribble for the SMPL-X basketball player (issue 30, first round): the right hand
-// bounces the ball off the floor, from the observation alone. What it does, measured
-// (docs/basketball.md, "The standing dribble"): at a 1v1's check ball it meets the ball after
-// its first bounce and pushes it back down (one dribble on all 300 unseen seeds, two on 8%), then
-// loses it and falls about 2.1 s in. Not used by any match player yet.
+// A standing dribble for the SMPL-X basketball player (issue 30, first and second rounds): the
+// right hand bounces the ball off the floor, from the observation alone. What it does, measured
+// (docs/basketball.md, "The standing dribble" and its second round): at a 1v1's check ball it
+// meets the ball after its first bounce and pushes it back down (one dribble on all 300 unseen
+// seeds 501301-501600, two on 84%), then loses it and falls about 1.9 s in: its reach carries
+// the centre of mass past the front of the feet, which the standing balance's ankles cannot pull
+// back. Not used by any match player yet.
 //
 // Each tick the ball's path is predicted (gravity, the basketball's drag, the floor's bounce with
 // its restitution) to the next time it comes up through the meeting height (`meet_height`, or its

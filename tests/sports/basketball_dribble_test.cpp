@@ -105,7 +105,7 @@ TEST(ScriptedDribble, TheCheckBallsTakerBouncesItOffItsHand) {
   // Tuning seeds 1..5, the first 2 s. The presented ball dropped, bounced and pushed back down by
   // the right hand: at least one dribble on each seed. Measured: 5 of 5 (1-2 each). What it does
   // not yet do, so not asserted (docs/basketball.md, "The standing dribble"): keep the ball (it
-  // is lost after one or two) or stay up (it falls about 2.1 s in, after the first push).
+  // is lost after one or two) or stay up (it falls 1.8-2.2 s in, after the first push or two).
   int dribbled = 0;
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     const Episode e = dribble_at_the_check_ball(seed, 2);
