@@ -7,7 +7,7 @@
 //   ball: its swinging feet knock it on, a dribble that ends in a shot when the feet meet the
 //   ball at speed. It aims at the goal's middle, or with a keeper in the goal, inside the post
 //   away from the keeper. In a match a ball within 11 m of the goal is kicked (SoccerKick), not
-//   dribbled;
+//   dribbled, once it lies on the kicking foot's side of the kicker's line;
 // - in a match a player keeps off a ball an opponent is nearer (1.5 m, goal-side, beside the
 //   opponent's way to the goal): most falls came from players walking into each other;
 // - the goalkeeper (penalty_kick_keeper, the side defending the near goal) stands on its line
