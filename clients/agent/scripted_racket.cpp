@@ -65,9 +65,6 @@ struct Play {
   double walking_back_angle = 0.4;
   std::vector<double> arc_speeds;
   double arc_drive = 1;  // the arc is driven this much faster than planned (the arm lags)
-  // An arc's shot is aimed this far (m) to the side its face comes from: the face sends the ball
-  // wider than planned toward the side it swings to.
-  double aim_against_swing = 0;
   // Once the ball is within reach, the arc is swung in joint space (scripted_tennis_swing.h):
   // the arm held in the posture that meets the ball, turned about the shoulder's vertical from
   // rest at the backswing, asked `swing_lead_s` ahead of the face's planned timing.
@@ -139,17 +136,7 @@ Play tennis_play() {
   // In joint space, from rest (issue 29, fourth round; tuning seeds 1-300): balls touched 9 ->
   // 18 of about 300, returned in 0 -> 4; the face lagged its goal by about a tick at contact.
   p.joint_swing = true;
-  // Asked two ticks ahead and turned on through 1.2 rad (issue 29, face round; ball-return tuning
-  // seeds 1-400, the touched balls met within reach): asked one tick ahead and held after 0.5
-  // rad, the arm still lagged the turn at contact, the face turned back a median 15 degrees from
-  // its planned normal and 0.87 of its planned speed, and half of those balls fell short of the
-  // net; asked two ticks ahead it stopped at the 0.5 rad held (0.75 of the speed), hence the
-  // longer follow-through: the normal 7 degrees off, 1.1 of the speed.
-  p.swing_lead_s = 0.066;
-  p.follow_angle = 1.2;
-  // With the face on plan the balls went wide toward the swing's side (11 of 16 out, landing
-  // 4.6-10 m off the middle line): aimed 3 m the other way, 7 out of 20 (returns in 2 -> 6).
-  p.aim_against_swing = 3;
+  p.swing_lead_s = 0.033;
   return p;
 }
 
@@ -277,12 +264,9 @@ void ScriptedRacketPolicy::plan(std::span<const float> o, const CourtFrame& cour
     if (tangent.x() > 0.5 && radius.norm() > 0.2) {
       // The least listed speed that returns the ball in, by bisection (a faster face sends the
       // ball further: a search over the normals at every speed costs too much of the tick).
-      const Eigen::Vector2d aim =
-          play.aim -
-          Eigen::Vector2d(0, tangent.y() > 0 ? play.aim_against_swing : -play.aim_against_swing);
       auto shot_at = [&](double speed) {
         return control::plan_shot_at_speed(sport_->path, best->position, best->velocity,
-                                           speed * tangent, aim, play.net_margin, 0.5);
+                                           speed * tangent, play.aim, play.net_margin, 0.5);
       };
       std::optional<control::ShotPlan> shot;
       int lo = -1, hi = static_cast<int>(play.arc_speeds.size()) - 1;
