@@ -33,10 +33,7 @@ struct Play {
   double home_x = 0;                 // court x the player returns to between balls
   Eigen::Vector2d aim;               // where strokes should land (court frame, far half)
   double net_margin = 0;             // m above the net
-  // How far out rally balls are met, of the arm's full reach (the trunk's lean adds
-  // `trunk_reach`); the serve meets its toss within `serve_reach_fraction` (tuned there).
-  double reach_fraction = 0.9;
-  double serve_reach_fraction = 0.9;
+  double reach_fraction = 0.9;       // of the arm's full reach
   // How much further the trunk's lean and turn take the shoulder; 0: the arm alone reaches (a
   // heavy racket swung from a leaning trunk topples the player).
   double trunk_reach = 0;
@@ -91,11 +88,6 @@ Play table_play() {
   p.aim = {0.6, 0};
   p.net_margin = 0.08;
   p.trunk_reach = 0.12;
-  // Rally balls met out to the straight arm's full reach, not 0.9 of it (issue 29, seventh
-  // round): of the fed balls, about two in five were still out of reach 0.2 s before contact
-  // (the legs' sidestep too slow); the arm with the trunk reaches further. Tuning seeds 1-300
-  // (ball return): returns in 37.5% -> 43.8%; with the backswing's room below, 45.0%.
-  p.reach_fraction = 1.0;
   p.max_back = 0.35;
   p.follow = 0.1;
   p.max_speed = 4;
@@ -336,7 +328,8 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
     back = std::min(play.max_back, speed * play.swing_s);
     // The reach the planner met the ball within, the trunk's lean included (within the arm's
     // alone, a ball met with the trunk's help had hardly any backswing and fell short: issue 29,
-    // seventh round, tuning seeds 1-300: not over 50 -> 25 balls, returns in 37.5% -> 41.5%).
+    // seventh round, tuning seeds 1-300: not over 50 -> 25 balls, returns in 37.5% -> 41.5%;
+    // unseen seeds 121001 on: 36.3% -> 39.0%, docs/racket-sports.md).
     while (back > 0.02 && (contact - line * back - shoulder).norm() > rally_reach()) back -= 0.02;
   }
   auto ready = [&] {
@@ -442,7 +435,7 @@ bool ScriptedRacketPolicy::plan_serve(std::span<const float> o, const CourtFrame
   stroke_.reset();
   const auto serve = control::plan_serve(
       sport_->path, sport_->path.predict(ball, velocity, 2.0),
-      court.point(pose.position[kRShoulder]), play.serve_reach_fraction * sport_->arm_reach,
+      court.point(pose.position[kRShoulder]), play.reach_fraction * sport_->arm_reach,
       sport_->face_back, court.point(play.sweet_spot), control::serve_aim(sport_->game, court.root),
       play.net_margin, control::kServeSoonestS);
   if (serve)
