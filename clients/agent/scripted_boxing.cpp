@@ -27,13 +27,8 @@ constexpr double kPlantFacing = 0.25;     // ...facing the opponent within this 
 constexpr double kPlantSpeed = 0.3;       // ...and moving slower than this (m/s)
 constexpr double kReplantBeyond_m = 0.3;  // planted, it steps again when this far off its range
 constexpr double kReplantFacing = 0.6;    // or the opponent this far to the side (rad)
-// Stepping, each step turns up to this much toward the opponent (the stepping controller's
-// default 0.5 rad). Two boxers circle each other about 1 rad off each other's line; a bigger
-// turn a step lands more punches with no more falls (0.65 and 0.8 alike on seeds 1-100), but
-// at 1.0 rad the boxers fall twice as often (docs/combat-sports.md, issue 30's fourth round).
-constexpr double kTurnPerStep = 0.65;
-constexpr double kPlantedLeg_m = 0.74;  // hip to ankle planted: knees bent, centre of mass low
-constexpr double kUpright = 2.0;        // hip correction per radian of pelvis tilt
+constexpr double kPlantedLeg_m = 0.74;    // hip to ankle planted: knees bent, centre of mass low
+constexpr double kUpright = 2.0;          // hip correction per radian of pelvis tilt
 constexpr double kAnkleP = 1.0, kAnkleD = 1.0;  // ankle per m of centre of mass off, per m/s
 constexpr double kGuardElbow = 1.8;             // rad
 constexpr double kGuardForward = 0.6;           // the guard's upper arm: forward, out and down
@@ -113,7 +108,6 @@ void ScriptedBoxingPolicy::start(const MatchInfo& match) {
   control_dt_ = match.control_dt;
   gains_ = StepGains();
   gains_.turn_start = 0.3;  // keep facing the opponent, stepping in place if need be
-  gains_.max_twist = kTurnPerStep;
   gains_.max_speed = kMaxSpeed;
   gains_.balance = {2.0, 2.0, 0.0, 2.0};  // standing in the rest, gloves up
   legs_.emplace(gains_, control_dt_);

@@ -171,7 +171,7 @@ void StepController::act(std::span<const float> o, const Eigen::Vector2d& target
   stance.hip_y += g.upright_gain * up.x();
   write_leg(a, stance_hip, stance);
   // Turning: the planted thigh twists the pelvis (a hip z angle turns the thigh against it).
-  set_joint(a, stance_hip, 2, -std::clamp(g.turn_gain * turn, -g.max_twist, g.max_twist));
+  set_joint(a, stance_hip, 2, -std::clamp(g.turn_gain * turn, -0.5, 0.5));
 
   flat_foot(o, a, kLKnee);
   flat_foot(o, a, kRKnee);

@@ -39,7 +39,6 @@ struct StepGains {
   double leg_length = 0.77;      // stance hip-to-ankle distance (a slightly bent knee)
   double upright_gain = 4.3;     // stance hip correction per radian of pelvis tilt
   double turn_gain = 3.0;        // stance hip twist per radian of heading error
-  double max_twist = 0.5;        // the stance hip's twist at most, rad (the turn of one step)
   double start_m = 0.3;          // standing, it starts to step when the target is this far
   double arrive_m = 0.12;        // closer than this and slower than...
   double settle_speed = 0.25;    // ...this, it stands still
