@@ -100,21 +100,25 @@ nlohmann::json scripted_matches(const std::string& sport, const std::string& mod
   std::vector<double> strokes;
   int by_score = 0, falls = 0, strokes_now = 0;
   nlohmann::json endings = nlohmann::json::object();  // what ended the points, by the call
+  nlohmann::json endings_by_strokes = nlohmann::json::object();  // [strokes][call]
   double seconds = 0;
   for (int i = 0; i < matches; ++i) {
     const std::vector<std::string> players(mode == "2v2" ? 4 : 2, "scripted");
-    const auto match = play_in_process(sport, {mode, seeds.next(), 0.0, format}, players,
-                                       [&](const sports::SportMatch& m) {
-                                         for (const auto& ev : events(m)) {
-                                           const std::string call = ev.value("call", "");
-                                           if (call == "hit") ++strokes_now;
-                                           if (call == "fall") ++falls;
-                                           if (call != "point") continue;
-                                           strokes.push_back(strokes_now), strokes_now = 0;
-                                           const std::string why = ev.value("reason", "");
-                                           endings[why] = endings.value(why, 0) + 1;
-                                         }
-                                       });
+    const auto match = play_in_process(
+        sport, {mode, seeds.next(), 0.0, format}, players, [&](const sports::SportMatch& m) {
+          for (const auto& ev : events(m)) {
+            const std::string call = ev.value("call", "");
+            if (call == "hit") ++strokes_now;
+            if (call == "fall") ++falls;
+            if (call != "point") continue;
+            strokes.push_back(strokes_now), strokes_now = 0;
+            const std::string why = ev.value("reason", "");
+            endings[why] = endings.value(why, 0) + 1;
+            auto& at = endings_by_strokes[std::to_string(int(strokes.back()))];
+            if (!at.is_object()) at = nlohmann::json::object();
+            at[why] = at.value(why, 0) + 1;
+          }
+        });
     by_score += match->outcome().reason != "time_limit";
     seconds += match->tick() * match->control_dt();
   }
@@ -142,6 +146,7 @@ nlohmann::json scripted_matches(const std::string& sport, const std::string& mod
             {"longest", strokes.empty() ? 0.0 : strokes.back()},
             {"histogram", histogram}}},
           {"point_endings", endings},
+          {"point_endings_by_strokes", endings_by_strokes},
           {"falls", falls},
           {"falls_per_minute", falls / (seconds / 60)},
           {"seconds_played", seconds}};

@@ -1,6 +1,7 @@
 #!/bin/bash
 # olympics-bench racket's 1v1 and 2v2 breakdowns add up: every point is counted once in
-# point_endings and once in the strokes histogram; the serve row's calls add up to its serves; and a --seeds list too short for the request is refused
+# point_endings and once in the strokes histogram (and in point_endings_by_strokes under its
+# strokes, which adds up to that histogram's count); the serve row's calls add up to its serves; and a --seeds list too short for the request is refused
 # with what to do (exit 2), not aborted. Usage: racket_bench_test.sh BIN_DIR
 set -euo pipefail
 bench="$1/olympics-bench"
@@ -21,6 +22,10 @@ for mode in ("1v1", "2v2"):
     histogram = s["strokes_per_point"]["histogram"]
     assert sum(histogram) == points, f"{mode}: histogram {histogram} != {points} points"
     assert len(histogram) == s["strokes_per_point"]["longest"] + 1, "histogram ends at the longest"
+    by_strokes = s["point_endings_by_strokes"]
+    for strokes, count in enumerate(histogram):
+        ended = sum(by_strokes.get(str(strokes), {}).values())
+        assert ended == count, f"{mode}: {ended} endings after {strokes} strokes != {count}"
     print(f"{mode}: {points} points: endings {endings}, histogram {histogram}")
 serve = sport["serve"]
 assert serve["serves"] == 2, serve
