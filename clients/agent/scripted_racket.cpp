@@ -57,6 +57,10 @@ struct Play {
   double walk_speed = 0.6;         // m/s the legs cover, roughly, toward a ball out of reach
   double balance_ahead = -0.03;    // the centre of mass held this far ahead of the ankles
   double horizon_s = 0;            // how far ahead the ball is predicted
+  // The legs walk to a ball out of reach only while they can still get there in time: its
+  // stance no further than walk_speed × the time left plus this (the arm meets balls that far
+  // short of the stance); beyond, they stand. 0: they always walk.
+  double chase_slack = 0;
   // The swing as an arc about the vertical through the shoulder (the arm turning as one, the
   // face at a constant distance), at the least of `arc_speeds` that returns the ball in.
   double max_back_angle = 0;  // radians of backswing along the arc; 0: a straight swing
@@ -137,6 +141,14 @@ Play tennis_play() {
   // 18 of about 300, returned in 0 -> 4; the face lagged its goal by about a tick at contact.
   p.joint_swing = true;
   p.swing_lead_s = 0.033;
+  // Of the 20 falls on ball-return tuning seeds 1-400 without this, 15 came while the legs
+  // walked to a ball out of reach; in 12 of those, and 3 more just after a swing, toward a
+  // stance 3-9 m away (a ball that bounces twice before the legs get there, or one chased again
+  // after it passed): the plain gait, asked for its top speed, ran away sideways or backward at
+  // 1-2 m/s and the player fell (issue 29, tennis falls; docs/racket-sports.md).
+  // Tuning seeds 1-400, falls 20 -> 11, returns in 5 -> 5, touched 26 -> 26; with 0.5 m of
+  // slack 4 falls, but 2 returns in (balls the legs reach at 0.6 m/s only with about 1.1 m).
+  p.chase_slack = 1.2;
   return p;
 }
 
@@ -526,6 +538,11 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
   Eigen::Vector3d walk(0, 0, 0);  // court frame, from the root
   if (stroke_ && (!stroke_->reachable || stroke_->time_to_hit > play.settle_s)) {
     walk = stroke_->stance - court.root;
+    walk.z() = 0;
+    // A ball the legs cannot get to in time: stand rather than run after it.
+    if (!stroke_->reachable && play.chase_slack > 0 &&
+        walk.norm() > play.walk_speed * std::max(0.0, stroke_->time_to_hit) + play.chase_slack)
+      walk.setZero();
   } else if (!coming && since_stroke_s_ > 0.4) {
     // Home: the middle of the own half's back, or in doubles the own side of it.
     const double home_y =
