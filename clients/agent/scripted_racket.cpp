@@ -37,9 +37,6 @@ struct Play {
   // How much further the trunk's lean and turn take the shoulder; 0: the arm alone reaches (a
   // heavy racket swung from a leaning trunk topples the player).
   double trunk_reach = 0;
-  // Rally balls met on the forehand side (right of the racket shoulder) out to this fraction of
-  // the arm's reach (and the trunk's); 0: `reach_fraction` on both sides.
-  double forehand_reach_fraction = 0;
   double table_clearance = 0.12;  // a ball met over the table is at least this far above it
   double max_back = 0;            // backswing, m along the swing's line
   double swing_s = 0.25;          // the swing from the backswing to the ball
@@ -95,14 +92,6 @@ Play table_play() {
   p.aim = {0.6, 0};
   p.net_margin = 0.08;
   p.trunk_reach = 0.12;
-  // On the forehand side out to the straight arm's full reach (issue 29, eighth round): of the
-  // fed balls, about two in five were still out of reach 0.2 s before contact (the legs' sidestep
-  // too slow). Meeting every ball that far out returned more but, on unseen seeds, fell more in
-  // 1v1; the falls traced (tuning seeds 1-10) all followed balls met left of the racket shoulder,
-  // across the body, at 0.93 of the arm's reach or more. Tuning seeds 1-300 (ball return):
-  // returns in 41.5% -> 42.7% (the full reach on both sides: 45.0%); 1v1 seeds 1-10: falls 3 -> 0
-  // (both sides: 2). Across the body the ball is met within `reach_fraction`, as before.
-  p.forehand_reach_fraction = 1.0;
   p.max_back = 0.35;
   p.follow = 0.1;
   p.max_speed = 4;
@@ -223,13 +212,8 @@ void ScriptedRacketPolicy::start(const MatchInfo& match) {
   sport_->arm.reset();
 }
 
-double ScriptedRacketPolicy::rally_reach(const Eigen::Vector3d& face,
-                                         const Eigen::Vector3d& shoulder) const {
-  const Play& play = sport_->play;
-  const bool forehand = face.y() < shoulder.y();  // heading frame: y to the left
-  const double fraction =
-      forehand ? std::max(play.reach_fraction, play.forehand_reach_fraction) : play.reach_fraction;
-  return fraction * sport_->arm_reach + play.trunk_reach;
+double ScriptedRacketPolicy::rally_reach() const {
+  return sport_->play.reach_fraction * sport_->arm_reach + sport_->play.trunk_reach;
 }
 
 void ScriptedRacketPolicy::plan(std::span<const float> o, const CourtFrame& court,
@@ -242,6 +226,7 @@ void ScriptedRacketPolicy::plan(std::span<const float> o, const CourtFrame& cour
   const std::vector<BallSample> path =
       sport_->path.predict(ball, velocity, play.horizon_s, bounced);
   const Eigen::Vector3d shoulder = pose.position[kRShoulder];
+  const double reach = rally_reach();
   const double face_back = sport_->face_back;
   const Eigen::Vector3d meet = play.meet_spot.value_or(play.sweet_spot);  // heading frame
   const Eigen::Vector3d spot = court.vector(meet);  // where balls are met from the root, court
@@ -271,8 +256,7 @@ void ScriptedRacketPolicy::plan(std::span<const float> o, const CourtFrame& cour
     const Eigen::Vector2d beside = (face - shoulder).head<2>();
     const bool arc_forward =
         play.max_back_angle <= 0 || std::abs(beside.y()) >= 0.6 * beside.norm();
-    const bool reachable =
-        face.x() > 0.2 && arc_forward && (face - shoulder).norm() <= rally_reach(face, shoulder);
+    const bool reachable = face.x() > 0.2 && arc_forward && (face - shoulder).norm() <= reach;
     double cost;
     if (reachable) {
       cost = 0.5 * (face - meet).norm();
@@ -358,8 +342,7 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
     // alone, a ball met with the trunk's help had hardly any backswing and fell short: issue 29,
     // seventh round, tuning seeds 1-300: not over 50 -> 25 balls, returns in 37.5% -> 41.5%;
     // unseen seeds 121001 on: 36.3% -> 39.0%, docs/racket-sports.md).
-    const double reach = rally_reach(contact, shoulder);
-    while (back > 0.02 && (contact - line * back - shoulder).norm() > reach) back -= 0.02;
+    while (back > 0.02 && (contact - line * back - shoulder).norm() > rally_reach()) back -= 0.02;
   }
   auto ready = [&] {
     control::LimbGoal g;

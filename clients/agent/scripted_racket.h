@@ -70,9 +70,9 @@ class ScriptedRacketPolicy : public Policy {
                   const control::BodyPose& pose);
   void drive_arm(const control::CourtFrame& court, const control::BodyPose& pose,
                  std::span<float> a);
-  // How far from the racket shoulder a rally ball is met with the face at `face` (heading frame):
-  // the arm's share of its reach (further on the forehand side) and the trunk's lean (m).
-  double rally_reach(const Eigen::Vector3d& face, const Eigen::Vector3d& shoulder) const;
+  // How far from the racket shoulder a rally ball is met: the arm's share of its reach and the
+  // trunk's lean (m).
+  double rally_reach() const;
 
   // Doubles: is it this player's ball (its side of the court in tennis, its turn at the table)?
   bool my_ball(const control::CourtFrame& court, const Eigen::Vector3d& partner,
