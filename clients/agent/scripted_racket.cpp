@@ -149,6 +149,14 @@ Play tennis_play() {
   // Tuning seeds 1-400, falls 20 -> 11, returns in 5 -> 5, touched 26 -> 26; with 0.5 m of
   // slack 4 falls, but 2 returns in (balls the legs reach at 0.6 m/s only with about 1.1 m).
   p.chase_slack = 1.2;
+  // A softer catch than the walker's default (velocity_gain 0.13: how much further the swing
+  // foot lands per m/s the body moves off what is asked). Of the 11 falls left on ball-return
+  // tuning seeds 1-400, most came in and after the swing, the legs stepping in place while the
+  // body swayed 0.5-1 m/s, its sideways speed changing sign from step to step as the racket swung
+  // across it (seeds 12, 309, 316, 364, 382), as if each step over-corrected the last. Tuning seeds
+  // 1-400 (in / touched / falls): 0.13: 5 / 26 / 11; 0.10: 5 / 22 / 4; 0.08: 4 / 17 / 6;
+  // 0.25: 5 / 23 / 56 (docs/racket-sports.md, tennis falls, second round).
+  p.legs.velocity_gain = 0.10;
   return p;
 }
 

@@ -1,5 +1,6 @@
 // The scripted tennis player's legs (clients/agent/scripted_racket.cpp): they do not run after a
-// ball they cannot get to in time, where the plain gait, asked for its top speed, fell.
+// ball they cannot get to in time, where the plain gait, asked for its top speed, fell; and they
+// do not over-correct the body's sway through the swing.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -37,6 +38,32 @@ TEST(ScriptedTennisLegs, DoNotRunAfterBallsTheyCannotGetTo) {
   std::printf("first balls with a stance over 3 m away: %d of 8; falls %d\n", far_strokes, falls);
   EXPECT_EQ(far_strokes, 8);  // the case under test: every one of these balls is far out of reach
   EXPECT_LE(falls, 2);
+}
+
+// Ball-return tuning seeds whose first ball the player, with the walker's default catch
+// (velocity_gain 0.13), fell on in or just after the swing: stepping in place with the body
+// swaying 0.5-1 m/s sideways or back as the racket swung across it, each step over-correcting
+// the last (issue 29, tennis falls, second round). The legs now catch it more softly (0.10).
+TEST(ScriptedTennisLegs, CatchTheBodyThroughTheSwing) {
+  int falls = 0, reachable = 0;
+  for (std::uint64_t seed : {12, 309, 316, 364, 382}) {
+    ScriptedRacketPlay play("tennis", {"ball_return", seed, 10.0, {}});
+    bool over = false, reached = false;
+    while (!play.over() && !over) {
+      for (const auto& ev : play.tick([&](int) {
+             const auto& stroke = play.players[0].stroke();
+             if (stroke && stroke->reachable) reached = true;
+           })) {
+        const std::string call = ev.value("call", "");
+        if (call == "fall") ++falls;
+        if (call == "return_in" || call == "point") over = true;
+      }
+    }
+    reachable += reached;
+  }
+  std::printf("first balls with a stroke within reach: %d of 5; falls %d\n", reachable, falls);
+  EXPECT_EQ(reachable, 5);  // the case under test: each ball is swung at
+  EXPECT_LE(falls, 1);
 }
 
 }  // namespace
