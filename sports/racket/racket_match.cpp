@@ -175,11 +175,15 @@ Eigen::Vector2d RacketMatch::draw_target(int slot) {
   return {opponent_side * x, y};
 }
 
+void RacketMatch::reset_players() {
+  for (int i = 0; i < slot_count(); ++i) reset_player(i, start_placement(i));
+}
+
 void RacketMatch::start_point() {
   const bool doubles = config_.mode == RacketMode::Doubles;
   int receiving_team = 0, fed_slot = 0;
   if (scoreboard_) {
-    for (int i = 0; i < slot_count(); ++i) reset_player(i, start_placement(i));
+    reset_players();
     receiving_team = scoreboard_->server();
     const int member = doubles ? doubles_member(receiving_team) : 0;
     for (int i = 0; i < slot_count(); ++i)
@@ -242,7 +246,7 @@ int RacketMatch::receiver_y_sign() const {
 }
 
 void RacketMatch::toss() {
-  for (int i = 0; i < slot_count(); ++i) reset_player(i, start_placement(i));
+  reset_players();
   const RacketGame& g = config_.game;
   ServeRule rule;
   rule.server_slot = server_slot_;
@@ -363,7 +367,7 @@ void RacketMatch::settle_tick() {
     nlohmann::json let = referee_event("let", time(), fed_slot_);
     let["reason"] = "both sides fell";
     log(std::move(let));
-    for (int i = 0; i < slot_count(); ++i) reset_player(i, start_placement(i));
+    reset_players();
     feed(teams()[fed_slot_], fed_slot_);
   } else if (both_fell) {
     referee_.let("both sides fell", time());  // the same server tosses again, below

@@ -63,6 +63,7 @@ class RacketMatch : public SmplMatch {
   void extra_scene_poses(std::vector<float>& out) const override;
 
   void start_point();
+  void reset_players();  // every player back at its place for a point's start
   void feed(int receiving_team, int fed_slot);  // the point's ball, launched to `fed_slot`
   void log_referee_calls();                     // the referee's calls not yet in the log
   void toss();  // `start: "serve"`: a ball tossed for the server (again after a fault or a let)
