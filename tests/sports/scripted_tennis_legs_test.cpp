@@ -11,28 +11,37 @@
 namespace olympics::client {
 namespace {
 
+// Plays the first ball of a tennis ball-return episode (until it is returned in or its point is
+// called); `each_tick` sees the player each control tick. Returns the falls called meanwhile.
+template <typename EachTick>
+int falls_on_the_first_ball(std::uint64_t seed, EachTick each_tick) {
+  ScriptedRacketPlay play("tennis", {"ball_return", seed, 10.0, {}});
+  int falls = 0;
+  bool over = false;
+  while (!play.over() && !over) {
+    for (const auto& ev : play.tick([&](int) { each_tick(play); })) {
+      const std::string call = ev.value("call", "");
+      if (call == "fall") ++falls;
+      if (call == "return_in" || call == "point") over = true;
+    }
+  }
+  return falls;
+}
+
 // Ball-return tuning seeds whose first ball the player, walking after every ball, fell chasing:
 // each time toward a stance 3-9 m away (issue 29, tennis falls). It fell on all 8 before the legs
 // gave up on balls out of their reach; now on none of them.
 TEST(ScriptedTennisLegs, DoNotRunAfterBallsTheyCannotGetTo) {
   int far_strokes = 0, falls = 0;
   for (std::uint64_t seed : {23, 175, 188, 201, 202, 256, 287, 353}) {
-    ScriptedRacketPlay play("tennis", {"ball_return", seed, 10.0, {}});
-    const int kCourtX = play.layout.offset("court_position", "x"),
-              kCourtY = play.layout.offset("court_position", "y");
-    bool over = false, far = false;
-    while (!play.over() && !over) {
-      for (const auto& ev : play.tick([&](int) {
-             const auto& stroke = play.players[0].stroke();
-             const Eigen::Vector2d root(play.obs[0][kCourtX], play.obs[0][kCourtY]);
-             if (stroke && !stroke->reachable && (stroke->stance.head<2>() - root).norm() > 3)
-               far = true;
-           })) {
-        const std::string call = ev.value("call", "");
-        if (call == "fall") ++falls;
-        if (call == "return_in" || call == "point") over = true;
-      }
-    }
+    bool far = false;
+    falls += falls_on_the_first_ball(seed, [&](const ScriptedRacketPlay& play) {
+      const int x = play.layout.offset("court_position", "x"),
+                y = play.layout.offset("court_position", "y");
+      const auto& stroke = play.players[0].stroke();
+      const Eigen::Vector2d root(play.obs[0][x], play.obs[0][y]);
+      if (stroke && !stroke->reachable && (stroke->stance.head<2>() - root).norm() > 3) far = true;
+    });
     far_strokes += far;
   }
   std::printf("first balls with a stance over 3 m away: %d of 8; falls %d\n", far_strokes, falls);
@@ -47,18 +56,11 @@ TEST(ScriptedTennisLegs, DoNotRunAfterBallsTheyCannotGetTo) {
 TEST(ScriptedTennisLegs, CatchTheBodyThroughTheSwing) {
   int falls = 0, reachable = 0;
   for (std::uint64_t seed : {12, 309, 316, 364, 382}) {
-    ScriptedRacketPlay play("tennis", {"ball_return", seed, 10.0, {}});
-    bool over = false, reached = false;
-    while (!play.over() && !over) {
-      for (const auto& ev : play.tick([&](int) {
-             const auto& stroke = play.players[0].stroke();
-             if (stroke && stroke->reachable) reached = true;
-           })) {
-        const std::string call = ev.value("call", "");
-        if (call == "fall") ++falls;
-        if (call == "return_in" || call == "point") over = true;
-      }
-    }
+    bool reached = false;
+    falls += falls_on_the_first_ball(seed, [&](const ScriptedRacketPlay& play) {
+      const auto& stroke = play.players[0].stroke();
+      if (stroke && stroke->reachable) reached = true;
+    });
     reachable += reached;
   }
   std::printf("first balls with a stroke within reach: %d of 5; falls %d\n", reachable, falls);
