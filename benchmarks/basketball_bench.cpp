@@ -251,14 +251,15 @@ void print_basketball_report(const nlohmann::json& r) {
     std::printf(
         "scripted dribble, %d episodes of %g s (seeds %s): consecutive dribbles before the ball "
         "was lost, median %d, p10 %d; one or more in %d (95%% interval %.1f-%.1f%%), two or more "
-        "in "
-        "%d; kept to the end %.1f%% (95%% interval %.1f-%.1f%%); episodes with a fall %d\n",
+        "in %d, three or more in %d; kept to the end %.1f%% (95%% interval %.1f-%.1f%%); episodes "
+        "with a fall %d (when, p10 / median / p90 s: %s)\n",
         d["episodes"].get<int>(), d["seconds"].get<double>(), d["seeds"].get<std::string>().c_str(),
         d["dribbles_median"].get<int>(), d["dribbles_p10"].get<int>(), d["one_or_more"].get<int>(),
         100 * d["one_or_more_ci95"][0].get<double>(), 100 * d["one_or_more_ci95"][1].get<double>(),
-        d["two_or_more"].get<int>(), 100 * d["kept_share"].get<double>(),
-        100 * d["kept_ci95"][0].get<double>(), 100 * d["kept_ci95"][1].get<double>(),
-        d["falls"].get<int>());
+        d["two_or_more"].get<int>(), d["three_or_more"].get<int>(),
+        100 * d["kept_share"].get<double>(), 100 * d["kept_ci95"][0].get<double>(),
+        100 * d["kept_ci95"][1].get<double>(), d["falls"].get<int>(),
+        d["fell_at_s_p10_median_p90"].dump().c_str());
   }
   for (const char* mode : {"1v1", "2v2"}) {
     const std::string key = "speed_" + std::string(mode);

@@ -17,7 +17,8 @@ constexpr double kPresent_s = 0.5;  // the check ball presented (`present_s`'s d
 nlohmann::json scripted_dribbles(const std::vector<std::uint64_t>& seeds, double seconds,
                                  bool per_episode) {
   std::vector<int> counts;
-  int kept = 0, falls = 0, one = 0, two = 0;
+  std::vector<double> fell_at_s;  // of the episodes with a fall
+  int kept = 0, falls = 0, one = 0, two = 0, three = 0;
   nlohmann::json episodes = nlohmann::json::array();
   for (const std::uint64_t seed : seeds) {
     auto m = sports::sport_or_throw("basketball").create({"1v1", seed, 0.0, {}});
@@ -58,7 +59,8 @@ nlohmann::json scripted_dribbles(const std::vector<std::uint64_t>& seeds, double
       if (tally.lost() && lost_at < 0) lost_at = m->tick() * m->control_dt();
     }
     counts.push_back(tally.dribbles());
-    one += tally.dribbles() >= 1, two += tally.dribbles() >= 2;
+    one += tally.dribbles() >= 1, two += tally.dribbles() >= 2, three += tally.dribbles() >= 3;
+    if (fell) fell_at_s.push_back(fell_at);
     kept += !tally.lost();
     falls += fell;
     if (per_episode)
@@ -75,6 +77,12 @@ nlohmann::json scripted_dribbles(const std::vector<std::uint64_t>& seeds, double
   std::sort(sorted.begin(), sorted.end());
   const int n = static_cast<int>(sorted.size());
   auto quantile = [&](double q) { return n == 0 ? 0 : sorted[static_cast<size_t>(q * (n - 1))]; };
+  // When the falls came (s from the match's start, the presentation included): p10, median, p90.
+  std::sort(fell_at_s.begin(), fell_at_s.end());
+  nlohmann::json fell_at = nlohmann::json::array();
+  for (const double q : {0.1, 0.5, 0.9})
+    if (!fell_at_s.empty())
+      fell_at.push_back(fell_at_s[static_cast<size_t>(q * (fell_at_s.size() - 1))]);
   nlohmann::json r = {{"episodes", n},
                       {"seconds", seconds},
                       {"dribbles_median", quantile(0.5)},
@@ -84,7 +92,12 @@ nlohmann::json scripted_dribbles(const std::vector<std::uint64_t>& seeds, double
                       {"one_or_more", one},
                       {"one_or_more_ci95", wilson_95(one, std::max(n, 1))},
                       {"two_or_more", two},
-                      {"falls", falls}};
+                      {"two_or_more_ci95", wilson_95(two, std::max(n, 1))},
+                      {"three_or_more", three},
+                      {"three_or_more_ci95", wilson_95(three, std::max(n, 1))},
+                      {"falls", falls},
+                      {"falls_ci95", wilson_95(falls, std::max(n, 1))},
+                      {"fell_at_s_p10_median_p90", fell_at}};
   if (per_episode) r["per_episode"] = episodes;
   return r;
 }
