@@ -180,10 +180,9 @@ nlohmann::json first_serves(const std::string& sport, const std::string& mode, i
     in += call == "serve_in", faults += call == "fault", lets += call == "let";
     other += call != "serve_in" && call != "fault" && call != "let";
   }
-  return {{"mode", mode},          {"serves", serves},
-          {"seeds", seeds.used()}, {"in", rate(in, serves)},
-          {"faults", faults},      {"fault_reasons", fault_reasons},
-          {"lets", lets},          {"other", other}};
+  return {{"mode", mode},           {"serves", serves}, {"seeds", seeds.used()},
+          {"in", rate(in, serves)}, {"faults", faults}, {"fault_reasons", fault_reasons},
+          {"lets", lets},           {"other", other}};
 }
 
 }  // namespace
