@@ -152,18 +152,25 @@ nlohmann::json scripted_matches(const std::string& sport, const std::string& mod
           {"seconds_played", seconds}};
 }
 
-// The scripted player's serve (`start: "serve"`): the first serve of each seed's scripted 1v1,
-// as the referee calls it: in (`serve_in`), a `fault`, a `let`, or neither before the point
-// ended (e.g. a fall).
-nlohmann::json first_serves(const std::string& sport, int serves, const std::string& named_seeds) {
+// The scripted player's serve (`start: "serve"`): the first serve of each seed's scripted 1v1 or
+// 2v2 (every player scripted), as the referee calls it: in (`serve_in`), a `fault` (by its
+// reason), a `let`, or neither before the point ended (e.g. a fall).
+nlohmann::json first_serves(const std::string& sport, const std::string& mode, int serves,
+                            const std::string& named_seeds) {
   SeedList seeds(named_seeds);
   int in = 0, faults = 0, lets = 0, other = 0;
+  nlohmann::json fault_reasons = nlohmann::json::object();
+  const std::vector<std::string> players(mode == "2v2" ? 4 : 2, "scripted");
   for (int i = 0; i < serves; ++i) {
     std::string call;  // how this seed's first serve was called
-    play_in_process_until(sport, {"1v1", seeds.next(), 10.0, {{"start", "serve"}}},
-                          {"scripted", "scripted"}, [&](const sports::SportMatch& m) {
+    play_in_process_until(sport, {mode, seeds.next(), 10.0, {{"start", "serve"}}}, players,
+                          [&](const sports::SportMatch& m) {
                             for (const auto& ev : events(m)) {
                               const std::string c = ev.value("call", "");
+                              if (c == "fault") {
+                                const std::string why = ev.value("reason", "");
+                                fault_reasons[why] = fault_reasons.value(why, 0) + 1;
+                              }
                               if (c == "serve_in" || c == "fault" || c == "let" || c == "point")
                                 call = c;
                               if (!call.empty()) return true;
@@ -173,8 +180,9 @@ nlohmann::json first_serves(const std::string& sport, int serves, const std::str
     in += call == "serve_in", faults += call == "fault", lets += call == "let";
     other += call != "serve_in" && call != "fault" && call != "let";
   }
-  return {{"serves", serves}, {"seeds", seeds.used()}, {"in", rate(in, serves)},
-          {"faults", faults}, {"lets", lets},          {"other", other}};
+  return {{"mode", mode},           {"serves", serves}, {"seeds", seeds.used()},
+          {"in", rate(in, serves)}, {"faults", faults}, {"fault_reasons", fault_reasons},
+          {"lets", lets},           {"other", other}};
 }
 
 }  // namespace
@@ -188,7 +196,10 @@ nlohmann::json run_racket_bench(const RacketBenchOptions& o) {
       r["ball_return"][policy] = ball_return(sport, policy, o.balls, o.episodes, o.seeds);
     if (o.matches > 0) r["1v1"] = scripted_matches(sport, "1v1", o.matches, o.seeds);
     if (o.doubles > 0) r["2v2"] = scripted_matches(sport, "2v2", o.doubles, o.seeds);
-    if (o.serves > 0) r["serve"] = first_serves(sport, o.serves, o.seeds);
+    if (o.serves > 0) {  // "serve": 1v1 (the key it always had), "serve_2v2": doubles
+      r["serve"] = first_serves(sport, "1v1", o.serves, o.seeds);
+      r["serve_2v2"] = first_serves(sport, "2v2", o.serves, o.seeds);
+    }
     if (!o.speed) continue;
     core::ModelSpec players = core::load_humanoid(core::HumanoidKind::Smpl);
     sports::equipment::attach_equipment(players, sport == "tennis"
@@ -227,13 +238,15 @@ void print_racket_report(const nlohmann::json& report) {
           b["smplolympics_hits_per_episode"].get<double>(), b["falls"].get<int>(),
           b["falls_per_minute"].get<double>());
     }
-    if (r.contains("serve")) {
-      const auto& v = r["serve"];
+    for (const char* key : {"serve", "serve_2v2"}) {
+      if (!r.contains(key)) continue;
+      const auto& v = r[key];
       std::printf(
-          "  serve (start: serve), the first of %d scripted 1v1s (seeds %s): in %s; %d faults, %d "
-          "lets, %d other\n",
-          v["serves"].get<int>(), v["seeds"].get<std::string>().c_str(), percent(v["in"]).c_str(),
-          v["faults"].get<int>(), v["lets"].get<int>(), v["other"].get<int>());
+          "  serve (start: serve), the first of %d scripted %ss (seeds %s): in %s; %d faults %s, "
+          "%d lets, %d other\n",
+          v["serves"].get<int>(), v["mode"].get<std::string>().c_str(),
+          v["seeds"].get<std::string>().c_str(), percent(v["in"]).c_str(), v["faults"].get<int>(),
+          v["fault_reasons"].dump().c_str(), v["lets"].get<int>(), v["other"].get<int>());
     }
     for (const char* mode : {"1v1", "2v2"}) {
       if (!r.contains(mode)) continue;

@@ -8,7 +8,8 @@
 //   to 11; tennis one set with a tie-break): strokes per point (median, p90, longest), the share
 //   of matches decided by score rather than the time limit, falls per minute;
 // - 2v2 (--doubles N), the same figures for doubles, every player scripted;
-// - serves (--serves N): the scripted player's first serve of N 1v1s, in / fault / let;
+// - serves (--serves N): the scripted player's first serve of N 1v1s and of N 2v2s, in / fault
+//   (by reason) / let;
 // - 1v1 ticks/s on one core against the same equipped humanoids stepping with nothing else.
 // Every figure is on seeds no tuning used: the scripted player was tuned on ball-return seeds
 // 1-200, so episodes here start at 100001 unless told otherwise.
@@ -25,7 +26,7 @@ struct RacketBenchOptions {
   int episodes = 0;    // ...or exactly this many episodes, when it is set
   int matches = 20;    // 1v1 matches per sport (0: none)
   int doubles = 0;     // 2v2 matches per sport, every player scripted (0: none)
-  int serves = 0;      // scripted serves per sport (`start: "serve"`), one 1v1 per seed (0: none)
+  int serves = 0;      // scripted serves per sport and mode (`start: "serve"`), one match per seed
   std::string seeds;   // first seeds, e.g. "100001-200000" (docs/figures.md); empty: from 100001
   double seconds = 2;  // wall seconds per speed measurement
   int repeats = 3;     // interleaved repeats (median reported)

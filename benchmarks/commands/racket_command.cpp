@@ -22,7 +22,7 @@ BenchCommand racket_command(CLI::App& app) {
   cli.add_option("--doubles", o->doubles, "scripted 2v2 matches per sport (0: none)")
       ->check(CLI::NonNegativeNumber);
   cli.add_option("--serves", o->serves,
-                 "scripted serves per sport, the first of a 1v1 with start: serve (0: none)")
+                 "scripted first serves per sport and mode, 1v1 and 2v2 (start: serve; 0: none)")
       ->check(CLI::NonNegativeNumber);
   add_seeds_option(cli, o->seeds, "episode and match (default: 100001 on, unseen by tuning)");
   cli.add_option("--policies", o->policies,

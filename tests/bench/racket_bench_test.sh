@@ -1,8 +1,9 @@
 #!/bin/bash
 # olympics-bench racket's 1v1 and 2v2 breakdowns add up: every point is counted once in
 # point_endings and once in the strokes histogram (and in point_endings_by_strokes under its
-# strokes, which adds up to that histogram's count); the serve row's calls add up to its serves; and a --seeds list too short for the request is refused
-# with what to do (exit 2), not aborted. Usage: racket_bench_test.sh BIN_DIR
+# strokes, which adds up to that histogram's count); each serve row's calls (1v1 and 2v2) add up
+# to its serves; and a --seeds list too short for the request is refused with what to do (exit
+# 2), not aborted. Usage: racket_bench_test.sh BIN_DIR
 set -euo pipefail
 bench="$1/olympics-bench"
 out=$(mktemp)
@@ -27,11 +28,13 @@ for mode in ("1v1", "2v2"):
         ended = sum(by_strokes.get(str(strokes), {}).values())
         assert ended == count, f"{mode}: {ended} endings after {strokes} strokes != {count}"
     print(f"{mode}: {points} points: endings {endings}, histogram {histogram}")
-serve = sport["serve"]
-assert serve["serves"] == 2, serve
-called = serve["in"]["count"] + serve["faults"] + serve["lets"] + serve["other"]
-assert called == 2, f"serves in, faults, lets and other {serve} do not add up to 2"
-print(f"serves: {serve}")
+for key, mode in (("serve", "1v1"), ("serve_2v2", "2v2")):
+    serve = sport[key]
+    assert serve["serves"] == 2 and serve["mode"] == mode, serve
+    called = serve["in"]["count"] + serve["faults"] + serve["lets"] + serve["other"]
+    assert called == 2, f"{key}: in, faults, lets and other {serve} do not add up to 2"
+    assert sum(serve["fault_reasons"].values()) == serve["faults"], f"{key}: {serve}"
+    print(f"{key}: {serve}")
 PY
 
 set +e
