@@ -42,15 +42,6 @@ constexpr double kKickFacing = 0.4;    // ...facing the kick's line within this,
 // goals 15 -> 18, falls 273 -> 239. Walking the start point 4-6 cm left, or stepping to put the
 // ball right of the line, brought the early falls back (17-35 of 91-103 kicks).
 constexpr double kMatchKickBallLeft_m = 0.02;
-// A match kick gives itself up when its planted ankle ends more than this behind the ball (the
-// ball from the ankle, along the kick, once the weight is on it): from further back the swing
-// met air or grazed the ball and the kicker fell (issue 30's kick, sixth round; match tuning
-// seeds 1-40, 2v2, halves of 60 s: of 20 kicks planted over 0.37 m behind, 16 sent the ball
-// under 2 m/s, 18 kickers fell; of 31 planted nearer, 22 fell). The kick's catch steps take the
-// body, and the chaser dribbles for kDribbleAfterGivingUp_s before it kicks again (falls 152 ->
-// 144, goals 10 -> 10; docs/soccer.md).
-constexpr double kMatchKickGiveUpBehind_m = 0.37;
-constexpr double kDribbleAfterGivingUp_s = 2.0;
 constexpr double kRolling_mps = 0.5;      // a ball faster than this is followed, not kicked
 constexpr double kKnockedAway_mps = 2.5;  // a kick gives up on a ball knocked this fast
 constexpr double kDown_m = 0.6;           // ...and on a body whose root is this low
@@ -104,10 +95,7 @@ void ScriptedSoccerPolicy::start(const MatchInfo& match) {
   if (!model_)
     model_ = std::make_shared<control::BodyModel>(
         control::BodyModel::humanoid(core::HumanoidKind::Smpl));
-  KickGains gains;
-  if (!penalty_) gains.give_up_behind_m = kMatchKickGiveUpBehind_m;
-  kick_ = std::make_shared<SoccerKick>(*model_, control_dt_, gains);
-  tick_ = dribble_until_ = 0;
+  kick_ = std::make_shared<SoccerKick>(*model_, control_dt_);
 }
 
 ScriptedSoccerPolicy::View ScriptedSoccerPolicy::see(std::span<const float> o) const {
@@ -159,7 +147,6 @@ void ScriptedSoccerPolicy::act(std::span<const float> o, std::span<float> a) {
     throw std::invalid_argument("the scripted soccer policy drives the SMPL humanoid (69 actions)");
   std::fill(a.begin(), a.end(), 0.0f);
   const View v = see(o);
-  ++tick_;
   // The keeper is the one whose own goal is near at the start.
   if (!keeper_) keeper_ = keeper_mode_ && v.own_goal.norm() < 3.0;
 
@@ -208,14 +195,6 @@ void ScriptedSoccerPolicy::kick_chase(std::span<const float> o, const View& v, s
     } else {
       if (!kick_->struck()) kick_direction_ = dir, kick_speed_ = speed;
       kick_->act(o, pose, v.ball, kick_direction_, kick_speed_, a);
-      if (!kick_->active() && kick_->gave_up()) {
-        // Caught by the kick's steps, both feet down: the walk takes over, and the chaser
-        // dribbles a while instead of lining up the same kick again.
-        legs_.reset();
-        dribble_until_ = tick_ + static_cast<int>(kDribbleAfterGivingUp_s / control_dt_);
-        std::fill(a.begin(), a.end(), 0.0f);
-        return walk(o, Eigen::Vector2d::Zero(), 0, a);
-      }
       if (!kick_->active()) {
         // The kicking foot is still in the air: the stepping controller takes over with it as
         // its first swing foot (it swings the foot on its target's side).
@@ -312,7 +291,7 @@ void ScriptedSoccerPolicy::chase(std::span<const float> o, const View& v, std::s
     lined_up_ = along < 0.1 && off_line < kLoseLine_m;
   else
     lined_up_ = along < -0.2 && along > -kBehind_m - 0.4 && off_line < kLinedUp_m;
-  if ((v.goal - ball).norm() < kShootFrom_m && tick_ >= dribble_until_) return kick_chase(o, v, a);
+  if ((v.goal - ball).norm() < kShootFrom_m) return kick_chase(o, v, a);
   if (lined_up_) return doing_ = "push", walk(o, ball + dir * kThrough_m, bearing(dir), a);
 
   doing_ = "approach";

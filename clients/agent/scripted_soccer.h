@@ -7,8 +7,7 @@
 //   ball: its swinging feet knock it on, a dribble that ends in a shot when the feet meet the
 //   ball at speed. It aims at the goal's middle, or with a keeper in the goal, inside the post
 //   away from the keeper. In a match a ball within 11 m of the goal is kicked (SoccerKick), not
-//   dribbled, once it lies on the kicking foot's side of the kicker's line; a kick whose plant
-//   lands far behind the ball gives itself up (its swing would meet air) and the chaser dribbles;
+//   dribbled, once it lies on the kicking foot's side of the kicker's line;
 // - in a match a player keeps off a ball an opponent is nearer (1.5 m, goal-side, beside the
 //   opponent's way to the goal): most falls came from players walking into each other;
 // - the goalkeeper (penalty_kick_keeper, the side defending the near goal) stands on its line
@@ -83,8 +82,6 @@ class ScriptedSoccerPolicy : public Policy {
   double kick_speed_ = 0;                 // m/s the ball is kicked at
   const char* doing_ = "";
   bool lined_up_ = false;  // behind the ball and facing the aim: pushing it on
-  int tick_ = 0;           // ticks since start()
-  int dribble_until_ = 0;  // after a match kick gave itself up, dribble until this tick
 };
 
 }  // namespace olympics::client

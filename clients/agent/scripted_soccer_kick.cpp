@@ -45,8 +45,6 @@ SoccerKick::SoccerKick(const control::BodyModel& model, double control_dt, KickG
 void SoccerKick::start(bool right_foot) {
   right_ = right_foot;
   struck_ = false;
-  gave_up_ = false;
-  ball_from_plant_.reset();
   swinging_[0].reset();
   swinging_[1].reset();
   next(Phase::ShiftToKicker);
@@ -83,14 +81,6 @@ Eigen::Vector2d SoccerKick::approach_from_ball(const Eigen::Vector2d& direction,
   // toward the planting foot's side by approach_side_m.
   return -direction * g_.approach_behind_m +
          side * (right_foot ? g_.approach_side_m : -g_.approach_side_m);
-}
-
-void SoccerKick::start_catch() {
-  StepGains catching;
-  catching.step_s = g_.catch_step_s;
-  catching.max_step = g_.catch_max_step_m;
-  catching_.emplace(catching, dt_);
-  next(Phase::Catch);
 }
 
 void SoccerKick::support(std::span<const float> o, const control::BodyPose& pose,
@@ -214,13 +204,6 @@ void SoccerKick::act(std::span<const float> o, const control::BodyPose& pose,
       const bool over = std::abs((com - to).dot(side)) < g_.planted_within_m ||
                         t_ >= g_.shift_s + g_.planted_wait_s;
       if (t_ >= g_.shift_s && over) {
-        const Eigen::Vector3d d = ball - pose.position[planter];
-        ball_from_plant_ = Eigen::Vector2d(d.dot(u), -flat(side).dot(d) * (right_ ? 1 : -1));
-        if (ball_from_plant_->x() > g_.give_up_behind_m) {
-          gave_up_ = true;
-          start_catch();
-          return;
-        }
         lift_off_ = toe_of(kicker);
         swing_speed_ = std::clamp(ball_speed / g_.ball_per_foot, 1.0, g_.max_foot_speed);
         next(Phase::Back);
@@ -287,7 +270,11 @@ void SoccerKick::act(std::span<const float> o, const control::BodyPose& pose,
         if (g_.catch_s > 0) {
           // The body still falls toward the kicking side: a stepping controller of the kick's
           // own, with quicker and longer steps than a walk's, catches it, the kicking foot first.
-          start_catch();
+          StepGains catching;
+          catching.step_s = g_.catch_step_s;
+          catching.max_step = g_.catch_max_step_m;
+          catching_.emplace(catching, dt_);
+          next(Phase::Catch);
           return;
         }
         next(g_.step_after ? Phase::Idle : Phase::Land);

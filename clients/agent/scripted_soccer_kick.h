@@ -5,8 +5,7 @@
 // How (a coach's instep drive, toe first, since the SMPL foot is a box):
 //  1. shift the weight onto the kicking foot's side;
 //  2. plant the other foot beside the ball (a step, the kicking leg standing);
-//  3. shift the weight onto the planted foot (with the planted foot too far behind the ball, give
-//     the kick up there and catch the body with steps: KickGains::give_up_behind_m);
+//  3. shift the weight onto the planted foot;
 //  4. draw the kicking foot back and swing it by inverse kinematics through the ball along the
 //     direction at the speed the ball needs (gravity-compensated, velocity fed forward);
 //  5. put it down beside the planted foot and stand on both again.
@@ -16,7 +15,6 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <limits>
 #include <optional>
 #include <span>
 
@@ -78,11 +76,6 @@ struct KickGains {
   double catch_max_step_m = 1.0;
   bool step_after = true;
   double ask_ahead_s = 0.02;  // the swing asked for this long after the tick starts
-  // The kick gives itself up, before the kicking foot leaves the ground, when the weight is on
-  // a planted foot more than this behind the ball (along the kick): the swing will meet air, and
-  // a kicker that swings at air falls. Given up, its catch steps (above) take the body over.
-  // Infinite (never) here; ScriptedSoccerPolicy sets it for match kicks.
-  double give_up_behind_m = std::numeric_limits<double>::infinity();
 };
 
 class SoccerKick {
@@ -93,11 +86,6 @@ class SoccerKick {
   void start(bool right_foot);
   bool active() const { return phase_ != Phase::Idle; }
   bool struck() const { return struck_; }
-  // The last kick gave itself up (KickGains::give_up_behind_m) instead of swinging.
-  bool gave_up() const { return gave_up_; }
-  // The ball from the planted ankle once the weight went onto it: along the kick, and across it
-  // toward the kicking foot's side (nullopt before); for tracing and tests.
-  const std::optional<Eigen::Vector2d>& ball_from_plant() const { return ball_from_plant_; }
   bool right_foot() const { return right_; }
   // The phase under way, by name ("idle", "shift_to_kicker", "plant", ...): for tracing.
   const char* phase_name() const;
@@ -115,7 +103,6 @@ class SoccerKick {
  private:
   enum class Phase { Idle, ShiftToKicker, Plant, ShiftToPlanted, Back, Swing, Land, Settle, Catch };
   void next(Phase p) { phase_ = p, t_ = 0; }
-  void start_catch();  // Phase::Catch, with a fresh stepping controller
   // Standing legs: each `share` of the weight (negative: swinging, not written), the centre of mass
   // led to `com_target` (heading frame, horizontal).
   void support(std::span<const float> o, const control::BodyPose& pose,
@@ -130,8 +117,7 @@ class SoccerKick {
   control::LimbControl swinging_[2];
   Phase phase_ = Phase::Idle;
   double t_ = 0;
-  bool right_ = true, struck_ = false, gave_up_ = false;
-  std::optional<Eigen::Vector2d> ball_from_plant_;
+  bool right_ = true, struck_ = false;
   Eigen::Vector3d lift_off_{0, 0, 0};   // where the swinging toe left the ground
   Eigen::Vector3d plant_{0, 0, 0};      // where the planted ankle is to go (from the ball)
   Eigen::Vector3d swing_end_{0, 0, 0};  // where the follow-through ended
