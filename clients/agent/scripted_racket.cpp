@@ -61,9 +61,6 @@ struct Play {
   // stance no further than walk_speed × the time left plus this (the arm meets balls that far
   // short of the stance); beyond, they stand. 0: they always walk.
   double chase_slack = 0;
-  // Once a ball coming has been within reach, the legs stand (no longer walking to put it at the
-  // sweet spot) until no ball comes to the player; false: they walk until `settle_s` before it.
-  bool stand_once_reached = false;
   // The swing as an arc about the vertical through the shoulder (the arm turning as one, the
   // face at a constant distance), at the least of `arc_speeds` that returns the ball in.
   double max_back_angle = 0;  // radians of backswing along the arc; 0: a straight swing
@@ -160,16 +157,6 @@ Play tennis_play() {
   // 1-400 (in / touched / falls): 0.13: 5 / 26 / 11; 0.10: 5 / 22 / 4; 0.08: 4 / 17 / 6;
   // 0.25: 5 / 23 / 56 (docs/racket-sports.md, tennis falls, second round).
   p.legs.velocity_gain = 0.10;
-  // Once a ball has been within the arm's reach, the legs stand until none comes (issue 29, 1v1
-  // falls): every 1v1 fall traced on tuning seeds 1-5 and 11-16 (33 of 33) was the fed player in
-  // the 3 s after the point's start, sidestepping toward the stance that meets the feed (coming
-  // at its body line) at the sweet spot, about 1 m to the side, and swinging: the body ran away
-  // sideways at about 1 m/s. Tuning seeds 1-20, first 25 points each (falls, strokes): walking
-  // on 14, 113; standing while the ball is within reach 10, 58 (seeds 1-5 and 11-16 only: the
-  // reach flips as the body sways and the legs walk again); standing for the rest of the ball
-  // once it was within reach, cleared at a new point 7, 35 (seeds 6-10 and 17-20); cleared only
-  // when no ball comes (kept) 3, 99 (docs/racket-sports.md, 1v1 falls).
-  p.stand_once_reached = true;
   return p;
 }
 
@@ -230,7 +217,6 @@ void ScriptedRacketPolicy::start(const MatchInfo& match) {
   stroke_.reset();
   sport_->contact_arm.clear();
   since_stroke_s_ = 1e9;
-  reached_ = false;
   sport_->arm.reset();
 }
 
@@ -556,16 +542,9 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
   }
   since_stroke_s_ += control_dt_;
 
-  // Cleared once no ball is coming to the player (it struck, or the ball went elsewhere), not by
-  // a point's restart: in 1v1 the same player is fed again after a missed feed, and then stands.
-  if (!coming) reached_ = false;
-  if (coming && stroke_ && stroke_->reachable) reached_ = true;
-
   // Legs: stand while the stroke is within reach; else walk to where the ball will be, or home.
   Eigen::Vector3d walk(0, 0, 0);  // court frame, from the root
-  if (play.stand_once_reached && reached_) {
-    // Within reach once: stand and let the arm reach it.
-  } else if (stroke_ && (!stroke_->reachable || stroke_->time_to_hit > play.settle_s)) {
+  if (stroke_ && (!stroke_->reachable || stroke_->time_to_hit > play.settle_s)) {
     walk = stroke_->stance - court.root;
     walk.z() = 0;
     // A ball the legs cannot get to in time: stand rather than run after it.

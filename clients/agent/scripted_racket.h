@@ -91,8 +91,7 @@ class ScriptedRacketPolicy : public Policy {
   std::optional<StepController> legs_;
   std::optional<Stroke> stroke_;
   Eigen::Vector3d root_velocity_ = Eigen::Vector3d::Zero();  // heading frame, this tick
-  bool reached_ = false;         // a ball coming has been within reach (Play::stand_once_reached)
-  double since_stroke_s_ = 1e9;  // time since the last planned contact
+  double since_stroke_s_ = 1e9;                              // time since the last planned contact
 };
 
 }  // namespace olympics::client
