@@ -29,6 +29,21 @@ client::MatchInfo info(const std::unique_ptr<SportMatch>& m, const std::string& 
           client::ObservationLayout::from_blocks(m->layout().observation), m->action_size()};
 }
 
+// A match (players who fall stand up) with a scripted player in each of its `slots` slots, and
+// their observation and action buffers.
+struct ScriptedSoccerPlay {
+  ScriptedSoccerPlay(const std::string& mode, std::uint64_t seed, int slots)
+      : m(sport_or_throw("soccer").create({mode, seed, 0.0, {{"falls", "stand_up"}}})),
+        players(slots),
+        o(slots, std::vector<float>(m->obs_size())),
+        a(slots, std::vector<float>(m->action_size())) {
+    for (auto& p : players) p.start(info(m, mode));
+  }
+  std::unique_ptr<SportMatch> m;
+  std::vector<client::ScriptedSoccerPolicy> players;
+  std::vector<std::vector<float>> o, a;
+};
+
 // A penalty kick's first kick from the spot: the ball's velocity once it has left the foot (its
 // fastest within a third of a second of first going faster than a walking foot pushes it,
 // 2.5 m/s), world frame. A ball only nudged (the kick given up) is no kick.
@@ -135,11 +150,8 @@ TEST(ScriptedSoccer, TheKeeperStopsASlowShotThatGoesInWithNobodyInGoal) {
 // Without the rule nobody keeps off, and on seeds 3 and 4 the players came within 0.42 and 0.29 m.
 TEST(ScriptedSoccer, InAMatchAPlayerKeepsOffABallTheOpponentIsNearer) {
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-    auto m = sport_or_throw("soccer").create({"1v1", seed, 0.0, {{"falls", "stand_up"}}});
-    std::vector<client::ScriptedSoccerPolicy> players(2);
-    for (auto& p : players) p.start(info(m, "1v1"));
-    std::vector<std::vector<float>> o(2, std::vector<float>(m->obs_size())),
-        a(2, std::vector<float>(m->action_size()));
+    ScriptedSoccerPlay play("1v1", seed, 2);
+    auto& [m, players, o, a] = play;
     const int opponent = info(m, "1v1").observation.offset("opponents", "position_0");
     double closest = 1e9;
     int yielded = 0, falls = 0;
@@ -228,11 +240,8 @@ TEST(ScriptedSoccer, PenaltyKicksLeaveOnTheLineToTheAimOnMedian) {
 TEST(ScriptedSoccer, In2v2AMatchKickerIsNotDownBeforeItsSwing) {
   int kicks = 0, down_before_swing = 0;
   for (std::uint64_t seed = 1; seed <= 8; ++seed) {
-    auto m = sport_or_throw("soccer").create({"2v2", seed, 0.0, {{"falls", "stand_up"}}});
-    std::vector<client::ScriptedSoccerPolicy> players(4);
-    for (auto& p : players) p.start(info(m, "2v2"));
-    std::vector<std::vector<float>> o(4, std::vector<float>(m->obs_size())),
-        a(4, std::vector<float>(m->action_size()));
+    ScriptedSoccerPlay play("2v2", seed, 4);
+    auto& [m, players, o, a] = play;
     while (m->tick() < 120 * 30 && !m->outcome().match_over) {
       for (int s = 0; s < 4; ++s) {
         m->observe(s, o[s]);
