@@ -108,6 +108,22 @@ Eigen::Vector3d BodyModel::gravity_torque(const BodyPose& pose, int body) const 
   return parent < 0 ? torque : Eigen::Vector3d(pose.rotation[parent].transpose() * torque);
 }
 
+Eigen::Vector3d BodyModel::turning_torque(const BodyPose& pose, int body,
+                                          const Eigen::Vector3d& pivot, double rate,
+                                          double acceleration) const {
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero();
+  for (int b : subtree_[body]) {
+    const Eigen::Vector3d com = pose.position[b] + pose.rotation[b] * bodies_[b].com;
+    Eigen::Vector3d out = com - pivot;
+    out.z() = 0;
+    const Eigen::Vector3d accel =
+        acceleration * Eigen::Vector3d::UnitZ().cross(out) - rate * rate * out;
+    torque += (com - pose.position[body]).cross(Eigen::Vector3d(-bodies_[b].mass * accel));
+  }
+  const int parent = bodies_[body].parent;
+  return parent < 0 ? torque : Eigen::Vector3d(pose.rotation[parent].transpose() * torque);
+}
+
 Eigen::Vector3d BodyModel::gravity_torque_above(const BodyPose& pose, int body) const {
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();
   for (int b = 0; b < size(); ++b)

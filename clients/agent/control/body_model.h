@@ -62,6 +62,13 @@ class BodyModel {
   // The torque gravity exerts on the subtree below joint `body` about that joint, in the parent
   // body's frame (what the joint's drive must hold).
   Eigen::Vector3d gravity_torque(const BodyPose& pose, int body) const;
+  // The inertial load on joint `body` while everything below it turns as one about the vertical
+  // through `pivot` (heading frame) at `rate` rad/s, speeding up at `acceleration` rad/s²: the
+  // torque about the joint of the forces that do not come (each body's mass times minus its
+  // centripetal and tangential acceleration; the bodies' own rotational inertia left out),
+  // parent frame, the way `gravity_torque` is (a drive holds it as it holds a weight).
+  Eigen::Vector3d turning_torque(const BodyPose& pose, int body, const Eigen::Vector3d& pivot,
+                                 double rate, double acceleration) const;
   // The torque gravity exerts about joint `body` on everything NOT below it (the body it holds
   // up when its limb stands on the ground, e.g. a stance leg's joints), parent frame.
   Eigen::Vector3d gravity_torque_above(const BodyPose& pose, int body) const;

@@ -104,6 +104,17 @@ std::optional<ShotPlan> plan_shot_at_speed(const BallPath& path, const Eigen::Ve
                                            const Eigen::Vector2d& target, double net_margin,
                                            double inside) {
   const auto& game = path.game();
+  const double side = game.half_width(false) - inside;
+  return plan_shot_at_speed(path, from, ball_in, face_velocity, target, net_margin,
+                            LandingArea{{inside, -side}, {game.half_length - inside, side}});
+}
+
+std::optional<ShotPlan> plan_shot_at_speed(const BallPath& path, const Eigen::Vector3d& from,
+                                           const Eigen::Vector3d& ball_in,
+                                           const Eigen::Vector3d& face_velocity,
+                                           const Eigen::Vector2d& target, double net_margin,
+                                           const LandingArea& area) {
+  const auto& game = path.game();
   const double e = game.equipment.restitution, mu = game.equipment.friction;
   std::optional<ShotPlan> best;
   double best_cost = std::numeric_limits<double>::infinity();
@@ -116,9 +127,7 @@ std::optional<ShotPlan> plan_shot_at_speed(const BallPath& path, const Eigen::Ve
       if (out.x() <= 0) continue;
       const BallPath::Flight f = path.fly(from, out);
       if (!f.lands || f.net_clearance < net_margin) continue;
-      if (f.landing.x() < inside || f.landing.x() > game.half_length - inside ||
-          std::abs(f.landing.y()) > game.half_width(false) - inside)
-        continue;
+      if (!area.contains(f.landing)) continue;
       const double cost = (f.landing - target).norm();
       if (cost < best_cost) {
         best_cost = cost;

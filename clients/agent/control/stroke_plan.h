@@ -44,10 +44,24 @@ std::optional<ShotPlan> plan_shot(const BallPath& path, const Eigen::Vector3d& f
                                   const Eigen::Vector3d& swing = Eigen::Vector3d::Zero(),
                                   double max_elevation = 1.0);
 
+// Where a shot must come down: a rectangle of the court (court frame, x from `lo` to `hi`).
+struct LandingArea {
+  Eigen::Vector2d lo, hi;
+  bool contains(const Eigen::Vector2d& p) const {
+    return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all();
+  }
+};
+
 // A face swung at a speed the arm can deliver: from `from`, arriving at `ball_in`, the face moving
 // at `face_velocity` (court frame), the normal (searched on a grid of azimuths and elevations)
-// whose return clears the net by `net_margin` and lands inside the far half at least `inside` m
-// from its lines, nearest `target`; nullopt when none does.
+// whose return clears the net by `net_margin` and lands in `area`, nearest `target`; nullopt when
+// none does.
+std::optional<ShotPlan> plan_shot_at_speed(const BallPath& path, const Eigen::Vector3d& from,
+                                           const Eigen::Vector3d& ball_in,
+                                           const Eigen::Vector3d& face_velocity,
+                                           const Eigen::Vector2d& target, double net_margin,
+                                           const LandingArea& area);
+// ...landing inside the far half, at least `inside` m from its lines.
 std::optional<ShotPlan> plan_shot_at_speed(const BallPath& path, const Eigen::Vector3d& from,
                                            const Eigen::Vector3d& ball_in,
                                            const Eigen::Vector3d& face_velocity,
