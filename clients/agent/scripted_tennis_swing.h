@@ -21,6 +21,7 @@ namespace olympics::client {
 // contact (the turn back at zero), then on at that rate to `follow` radians and held there.
 struct SwingTurn {
   double angle = 0, rate = 0;
+  double acceleration = 0;  // rad/s², while it speeds up to `rate`
 };
 SwingTurn swing_turn(double tau, double rate, double back, double follow);
 
@@ -28,9 +29,19 @@ SwingTurn swing_turn(double tau, double rate, double back, double follow);
 // a LimbIk solution for the contact pose in `pose`) with its first joint (the shoulder) turned
 // by `turn.angle` radians about the vertical (left positive), turning at `turn.rate`; gravity
 // compensation for `gravity_scale` times the weight of the pose wanted and velocity feed-forward
-// as target offsets (control/drive_target.h).
+// as target offsets (control/drive_target.h); with `hold_turning`, also the turn's centripetal and
+// tangential load on each joint (BodyModel::turning_torque; a fast swing flings the racket out and
+// drags it back otherwise: the serve's face, turned at some 15 rad/s, met the ball 15 cm low).
 void drive_turned_arm(const control::BodyModel& model, const control::LimbIk& ik,
                       const control::BodyPose& pose, const std::vector<Eigen::Matrix3d>& contact,
-                      const SwingTurn& turn, double gravity_scale, std::span<float> action);
+                      const SwingTurn& turn, double gravity_scale, std::span<float> action,
+                      bool hold_turning = false);
+
+// Writes the free (left) arm's shoulder: held out straight to the side and turned about the
+// vertical the other way from the racket arm's `turn`, so that its reaction cancels part of the
+// racket arm's. Swung alone, a 10 m/s serve spun the body 0.5-0.75 rad on its feet before contact;
+// with it, about 0.2 rad (docs/racket-sports.md, the tennis serve).
+void drive_counter_arm(const control::BodyModel& model, const control::BodyPose& pose,
+                       const SwingTurn& turn, double gravity_scale, std::span<float> action);
 
 }  // namespace olympics::client

@@ -78,16 +78,22 @@ ServeAim serve_aim(const sports::racket::RacketGame& game, const Eigen::Vector3d
     aim.landing = {0.6 * game.half_length, across * quarter};
   } else {
     aim.landing = {0.65 * game.service_line, across * 0.5 * game.half_width_singles};
+    // Between the net and the service line, on the far side of the centre line (both halves
+    // from the middle).
+    const double in = kServeBoxInside, side = game.half_width_singles - in;
+    aim.box = {{in, across > 0 ? in : -side}, {game.service_line - in, across < 0 ? -in : side}};
   }
   return aim;
 }
 
-std::optional<ServePlan> plan_serve(const BallPath& path, const std::vector<BallSample>& toss,
-                                    const Eigen::Vector3d& shoulder, double reach, double face_back,
-                                    const Eigen::Vector3d& sweet_spot, const ServeAim& aim,
-                                    double net_margin, double min_time) {
-  const auto& game = path.game();
-  // Falling, untouched, within reach: nearest the sweet spot first.
+namespace {
+
+// On the toss's path the falling, untouched points whose face position lies within reach of the
+// shoulder: nearest the sweet spot first, at most kContactsTried.
+std::vector<const BallSample*> serve_contacts(const std::vector<BallSample>& toss,
+                                              const Eigen::Vector3d& shoulder, double reach,
+                                              double face_back, const Eigen::Vector3d& sweet_spot,
+                                              double min_time) {
   std::vector<std::pair<double, const BallSample*>> candidates;
   for (const BallSample& s : toss) {
     if (s.time < min_time || s.velocity.z() > 0 || s.own_bounces + s.other_bounces > 0) continue;
@@ -99,7 +105,20 @@ std::optional<ServePlan> plan_serve(const BallPath& path, const std::vector<Ball
   std::sort(candidates.begin(), candidates.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
   if (candidates.size() > kContactsTried) candidates.resize(kContactsTried);
-  for (const auto& [distance, at] : candidates) {
+  std::vector<const BallSample*> contacts;
+  for (const auto& c : candidates) contacts.push_back(c.second);
+  return contacts;
+}
+
+}  // namespace
+
+std::optional<ServePlan> plan_serve(const BallPath& path, const std::vector<BallSample>& toss,
+                                    const Eigen::Vector3d& shoulder, double reach, double face_back,
+                                    const Eigen::Vector3d& sweet_spot, const ServeAim& aim,
+                                    double net_margin, double min_time) {
+  const auto& game = path.game();
+  for (const BallSample* at :
+       serve_contacts(toss, shoulder, reach, face_back, sweet_spot, min_time)) {
     const Eigen::Vector2d toward = (aim.landing - at->position.head<2>()).normalized();
     const Eigen::Vector3d swing(toward.x(), toward.y(), 0);
     if (!game.on_table) {
@@ -124,6 +143,29 @@ std::optional<ServePlan> plan_serve(const BallPath& path, const std::vector<Ball
         if (shot && error < best_error) best = shot, best_error = error;
       }
     if (best) return ServePlan{*at, *best};
+  }
+  return std::nullopt;
+}
+
+std::optional<ServePlan> plan_arc_serve(const BallPath& path, const std::vector<BallSample>& toss,
+                                        const Eigen::Vector3d& shoulder, double reach,
+                                        double face_back, const Eigen::Vector3d& sweet_spot,
+                                        const ServeAim& aim, double net_margin, double min_time,
+                                        const Eigen::Vector3d& pivot,
+                                        const std::vector<double>& speeds) {
+  for (const BallSample* at :
+       serve_contacts(toss, shoulder, reach, face_back, sweet_spot, min_time)) {
+    // The arc's tangent at the face: turning left (a forehand) right of the pivot.
+    Eigen::Vector3d radius = at->position - Eigen::Vector3d(face_back, 0, 0) - pivot;
+    radius.z() = 0;
+    if (radius.norm() < 0.2) continue;
+    Eigen::Vector3d tangent = Eigen::Vector3d(-radius.y(), radius.x(), 0).normalized();
+    if (tangent.x() < 0) tangent = -tangent;
+    if (tangent.x() < 0.5) continue;  // the arc runs across the court there, not toward the net
+    for (double speed : speeds)
+      if (auto shot = plan_shot_at_speed(path, at->position, at->velocity, speed * tangent,
+                                         aim.landing, net_margin, aim.box))
+        return ServePlan{*at, *shot};
   }
   return std::nullopt;
 }

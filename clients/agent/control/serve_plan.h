@@ -28,6 +28,7 @@ bool is_toss(const Eigen::Vector3d& ball, const Eigen::Vector3d& velocity,
 struct ServeAim {
   Eigen::Vector2d landing{0, 0};     // where the serve should land on the receiver's side
   Eigen::Vector2d own_bounce{0, 0};  // table tennis: its first bounce on the server's court
+  LandingArea box;                   // tennis: the service box, kServeBoxInside within its lines
 };
 ServeAim serve_aim(const sports::racket::RacketGame& game, const Eigen::Vector3d& root);
 
@@ -40,6 +41,9 @@ struct ServePlan {
   ShotPlan shot;
 };
 
+// Tennis: a serve planned for the ball to land this far inside the service box's lines (m).
+constexpr double kServeBoxInside = 0.4;
+
 // On the toss's predicted path, the falling points whose face position (the ball's centre
 // `face_back` m back along -x) lies within `reach` of the shoulder, nearest `sweet_spot` (court
 // frame, absolute) first and no sooner than `min_time`: the first for which a level swing toward
@@ -48,5 +52,18 @@ std::optional<ServePlan> plan_serve(const BallPath& path, const std::vector<Ball
                                     const Eigen::Vector3d& shoulder, double reach, double face_back,
                                     const Eigen::Vector3d& sweet_spot, const ServeAim& aim,
                                     double net_margin, double min_time);
+
+// Tennis, the serve swung on an arc about the vertical through `pivot` (the shoulder: the arm
+// turning as one, scripted_tennis_swing.h): at the same meeting points as `plan_serve`, where the
+// arc runs toward the net, the least of `speeds` (m/s of face along the arc's tangent, ascending)
+// for which a face normal sends the ball into the service box (`plan_shot_at_speed`); the
+// shot's face direction is the tangent. A level swing toward the box asks the face for about
+// 9 m/s (a ball at about 12 m/s); the arc is where this arm's face is fastest.
+std::optional<ServePlan> plan_arc_serve(const BallPath& path, const std::vector<BallSample>& toss,
+                                        const Eigen::Vector3d& shoulder, double reach,
+                                        double face_back, const Eigen::Vector3d& sweet_spot,
+                                        const ServeAim& aim, double net_margin, double min_time,
+                                        const Eigen::Vector3d& pivot,
+                                        const std::vector<double>& speeds);
 
 }  // namespace olympics::client::control
