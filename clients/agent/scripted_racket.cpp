@@ -165,17 +165,6 @@ Play tennis_play() {
   // 1-400 (in / touched / falls): 0.13: 5 / 26 / 11; 0.10: 5 / 22 / 4; 0.08: 4 / 17 / 6;
   // 0.25: 5 / 23 / 56 (docs/racket-sports.md, tennis falls, second round).
   p.legs.velocity_gain = 0.10;
-  // Quicker, longer side steps, the lead foot kept nearer the body (a shuffle at up to 0.8 m/s,
-  // forward and back unlimited as in the plain gait). Reach is what the returns lack: on
-  // ball-return tuning seeds 1-100 the plain gait covered a median 0.17 m/s toward a stance
-  // 0.8-2.2 m to the side over the first 1.5 s, and a ball came within reach for 9 of 100;
-  // the feeds come anywhere across the 8.2 m half, and a ball model with the paths the player
-  // predicts gets twice the balls within reach at 0.5 m/s as at 0.22. With these steps it covers
-  // a median 0.33 m/s (issue 29, reach round; docs/racket-sports.md).
-  p.legs.step_s = 0.2;
-  p.legs.max_side_speed = 0.8;
-  p.legs.max_side_step = 0.6;
-  p.legs.side_step = -0.06;
   return p;
 }
 
