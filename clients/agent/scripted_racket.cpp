@@ -65,6 +65,10 @@ struct Play {
   // stance no further than walk_speed × the time left plus this (the arm meets balls that far
   // short of the stance); beyond, they stand. 0: they always walk.
   double chase_slack = 0;
+  // A ball swung at and missed (its committed contact passed while it still comes) is let go:
+  // the legs stand until the ball is dead or struck, rather than chase it along its path behind
+  // the player. false: the planner picks a later point on the path and the legs walk there.
+  bool let_go_missed = false;
   // The swing as an arc about the vertical through the shoulder (the arm turning as one, the
   // face at a constant distance), at the least of `arc_speeds` that returns the ball in.
   double max_back_angle = 0;  // radians of backswing along the arc; 0: a straight swing
@@ -129,6 +133,14 @@ Play table_play() {
   // degrees 111 in (88 out: on the receiver's left half), 5 degrees 182 in (18 lets, no fault), 7
   // degrees 168 in (docs/racket-sports.md, the doubles serve).
   p.doubles_serve_turn = 5 * M_PI / 180;
+  // The legs let go of balls they cannot get to: a ball swung at and missed is not chased along
+  // its path behind the player, and a ball out of reach is walked to only while its stance is
+  // within 0.6 m/s x the time left + 0.5 m. Of the 12 falls traced in 1v1 on tuning seeds 1-40,
+  // 5 came chasing so (a missed ball re-planned, or a stance 0.9-2.2 m away with 0.1-0.4 s left,
+  // the body lunging at 1-1.5 m/s). Ball return, tuning seeds 1-300: returns in 213 -> 211 of
+  // about 512, falls 5 -> 1 (issue 29, ninth round; docs/racket-sports.md).
+  p.let_go_missed = true;
+  p.chase_slack = 0.5;
   return p;
 }
 
@@ -243,6 +255,7 @@ void ScriptedRacketPolicy::start(const MatchInfo& match) {
   stroke_.reset();
   sport_->contact_arm.clear();
   since_stroke_s_ = 1e9;
+  missed_ = false;
   sport_->arm.reset();
 }
 
@@ -528,10 +541,9 @@ bool ScriptedRacketPolicy::plan_serve(std::span<const float> o, const CourtFrame
 
 bool ScriptedRacketPolicy::my_ball(const CourtFrame& court, const Eigen::Vector3d& partner,
                                    const Eigen::Vector3d& ball, const Eigen::Vector3d& landing,
-                                   bool team_coming) {
-  // A new point (the ball put back at the feed): nobody's turn yet.
-  if ((ball - last_ball_).norm() > 1.0) my_turn_ = -1, struck_this_turn_ = false;
-  last_ball_ = ball;
+                                   bool team_coming, bool new_point) {
+  // A new point: nobody's turn yet.
+  if (new_point) my_turn_ = -1, struck_this_turn_ = false;
   const bool nearer = (ball - court.root).head<2>().norm() <= (ball - partner).head<2>().norm();
   if (!sport_->game.on_table) return nearer;  // tennis: either partner; the nearer one plays
   // Table tennis: the side's first stroke of a point is taken by the partner on whose side of
@@ -570,6 +582,9 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
       if (p.x() < 0) partner = p;
     }
   const Eigen::Vector3d ball = court.point(vec3(o, at.ball));
+  // A new point: the ball put back at the feed, further than it flies in a tick.
+  const bool new_point = (ball - last_ball_).norm() > 1.0;
+  last_ball_ = ball;
   const bool team_coming = o[at.coming] > 0.5;
   bool coming = team_coming && o[at.struck] < 0.5;  // to me, not struck yet
   if (doubles_) {
@@ -580,17 +595,19 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
       my_turn_ = struck_this_turn_ ? 0 : 1, struck_this_turn_ = false;
     was_coming_ = team_coming;
     // Every tick: it watches for a new point.
-    const bool mine = my_ball(court, partner, ball, court.point(vec3(o, at.landing)), team_coming);
+    const bool mine =
+        my_ball(court, partner, ball, court.point(vec3(o, at.landing)), team_coming, new_point);
     coming = coming && mine;
   }
+  if (!coming || new_point) missed_ = false;
   if (coming && stroke_ && stroke_->reachable &&
       stroke_->time_to_hit - control_dt_ < play.commit_s) {
     // Committed: the swing is under way; the ball is met where it was planned.
     stroke_->time_to_hit -= control_dt_;
-    if (stroke_->time_to_hit < -play.commit_s) stroke_.reset();
+    if (stroke_->time_to_hit < -play.commit_s) stroke_.reset(), missed_ = play.let_go_missed;
   } else if (coming && plan_serve(o, court, pose)) {
     // A toss to serve: the serve is planned (control/serve_plan.h).
-  } else if (coming) {
+  } else if (coming && !missed_) {
     plan(o, court, pose);
   } else if (stroke_) {
     stroke_.reset();

@@ -77,7 +77,8 @@ class ScriptedRacketPolicy : public Policy {
 
   // Doubles: is it this player's ball (its side of the court in tennis, its turn at the table)?
   bool my_ball(const control::CourtFrame& court, const Eigen::Vector3d& partner,
-               const Eigen::Vector3d& ball, const Eigen::Vector3d& landing, bool team_coming);
+               const Eigen::Vector3d& ball, const Eigen::Vector3d& landing, bool team_coming,
+               bool new_point);
 
   Blocks blocks_;
   std::vector<int> others_;  // the other players' root positions ("others"; none in ball return)
@@ -85,8 +86,10 @@ class ScriptedRacketPolicy : public Policy {
   // Table-tennis doubles' turn: did this player strike while the ball was its team's, and is it
   // its turn (unknown at a point's first stroke: the player nearer the ball takes it).
   bool struck_this_turn_ = false, was_coming_ = false;
-  int my_turn_ = -1;  // 1 yes, 0 no, -1 unknown
-  Eigen::Vector3d last_ball_ = Eigen::Vector3d::Zero();
+  int my_turn_ = -1;                                     // 1 yes, 0 no, -1 unknown
+  Eigen::Vector3d last_ball_ = Eigen::Vector3d::Zero();  // court frame, the last tick's
+  // The ball now coming was swung at and passed the racket (Play::let_go_missed).
+  bool missed_ = false;
   std::unique_ptr<Sport> sport_;
   double control_dt_ = 0;
   std::optional<StepController> legs_;
