@@ -42,7 +42,7 @@ constexpr double kPunchLean = 0.4;     // rad, the trunk pitched forward
 constexpr double kPunchTurn = 0.4;     // rad, the trunk turned about the spine
 constexpr double kPunchReach_m = 0.9;  // shoulder to the chest's centre, at most
 
-void guard(std::span<const float> o, std::span<float> a, Arm arm) {
+void guard_arm(std::span<const float> o, std::span<float> a, Arm arm) {
   const double side = arm == Arm::Right ? -1 : 1;
   point_arm(o, a, arm, {kGuardForward, 0.45 * side, -0.7},
             arm == Arm::Right ? M_PI / 2 : -M_PI / 2);
@@ -99,6 +99,19 @@ const control::BodyModel& smpl_model() {
 
 }  // namespace
 
+StepGains boxing_step_gains() {
+  StepGains g;
+  g.turn_start = 0.3;  // keep facing the opponent, stepping in place if need be
+  g.max_speed = kMaxSpeed;
+  g.balance = {2.0, 2.0, 0.0, 2.0};  // standing in the rest, gloves up
+  return g;
+}
+
+void hold_guard(std::span<const float> o, std::span<float> a) {
+  guard_arm(o, a, Arm::Left);
+  guard_arm(o, a, Arm::Right);
+}
+
 void ScriptedBoxingPolicy::start(const MatchInfo& match) {
   if (match.sport != "boxing")
     throw std::invalid_argument("the scripted boxing policy plays boxing, not " + match.sport);
@@ -106,10 +119,7 @@ void ScriptedBoxingPolicy::start(const MatchInfo& match) {
   blocks_ = {l.offset("opponent_root", "position"), l.offset("opponent_targets", "chest"),
              l.offset("bout", "resting")};
   control_dt_ = match.control_dt;
-  gains_ = StepGains();
-  gains_.turn_start = 0.3;  // keep facing the opponent, stepping in place if need be
-  gains_.max_speed = kMaxSpeed;
-  gains_.balance = {2.0, 2.0, 0.0, 2.0};  // standing in the rest, gloves up
+  gains_ = boxing_step_gains();
   legs_.emplace(gains_, control_dt_);
   clock_s_ = 0;
   planted_ = was_resting_ = false;
@@ -152,8 +162,7 @@ void ScriptedBoxingPolicy::act(std::span<const float> o, std::span<float> a) {
   else
     legs_->act(o, towards * off * kGapShare, bearing, a);
 
-  guard(o, a, Arm::Left);
-  guard(o, a, Arm::Right);
+  hold_guard(o, a);
   if (resting || !planted_ || distance > kInRange_m) {
     clock_s_ = 0;
     return;
