@@ -90,12 +90,12 @@ bool StepController::losing_balance(std::span<const float> o) const {
 }
 
 Eigen::Vector2d StepController::placement_origin(std::span<const float> o) {
-  if (!gains_.place_about_centre_of_mass) return Eigen::Vector2d::Zero();
+  if (gains_.centre_of_mass_placement == 0) return Eigen::Vector2d::Zero();
   static const control::BodyModel model = control::BodyModel::humanoid(core::HumanoidKind::Smpl);
   const Eigen::Vector2d com = model.centre_of_mass(model.pose_from_observation(o)).head<2>();
   if (!step_com_) step_com_ = com;
   *step_com_ += (com - *step_com_) * std::min(1.0, control_dt_ / gains_.step_s);
-  return *step_com_;
+  return gains_.centre_of_mass_placement * *step_com_;
 }
 
 void StepController::begin_step(std::span<const float> o, bool left_swings) {
@@ -141,8 +141,8 @@ void StepController::act(std::span<const float> o, const Eigen::Vector2d& target
   if (g.max_forward_speed > 0)
     desired_v.x() = std::clamp(desired_v.x(), -g.max_forward_speed, g.max_forward_speed);
   const double remaining = g.step_s - phase_s_;
-  Eigen::Vector2d foot =
-      placement_origin(o) + v * (remaining + g.lead_s) + g.velocity_gain * (v - desired_v);
+  Eigen::Vector2d foot = v * (remaining + g.lead_s) + g.velocity_gain * (v - desired_v);
+  foot += placement_origin(o);
   foot.y() += side * g.stance_width;
   // Moving sideways, the foot on the side of the motion leads; side_step moves where it lands.
   const bool leads = side * desired_v.y() > 0;

@@ -57,14 +57,14 @@ struct StepGains {
   // The lead foot (the one on the side moved toward) lands this much further out per m/s asked
   // sideways, s; negative: nearer the body, which keeps it accelerating that way.
   double side_step = 0;
-  // Where the swing foot goes is reckoned from the whole body's centre of mass instead of the
-  // root (its offset from the root averaged over about a step, which smooths out the swinging
-  // leg's own weight). A body whose arms are held out in front (a boxer's guard puts the centre
-  // of mass 4 cm ahead of the root) otherwise keeps falling forward onto each step: stepping in
-  // place on a spot, the guard up, it drifted 0.15 m/s forward while asked back at 0.3 m/s;
-  // about the centre of mass, under 0.01 m/s (docs/combat-sports.md). Off by default: the other
-  // sports were tuned with the feet placed about the root.
-  bool place_about_centre_of_mass = false;
+  // How far toward the whole body's centre of mass (0: the root, 1: the centre of mass) the
+  // swing foot's placement is reckoned from; the centre of mass's offset from the root is
+  // averaged over about a step, which smooths out the swinging leg's own weight. A body whose
+  // arms are held out in front (a boxer's guard puts the centre of mass 4 cm ahead of the root)
+  // otherwise keeps falling forward onto each step: stepping in place on a spot, the guard up,
+  // it drifted 0.15 m/s forward while asked back at 0.3 m/s; about the centre of mass, under
+  // 0.01 m/s (docs/combat-sports.md). 0 by default: the other sports were tuned about the root.
+  double centre_of_mass_placement = 0;
 };
 
 // A faster sideways gait, `base` otherwise: 0.2 s steps, 0.6 m side steps, the lead foot
@@ -119,7 +119,7 @@ class StepController {
   Eigen::Vector2d lift_off_{0, 0};
   bool balance_com_ = false;
   Eigen::Vector2d com_offset_{0, 0};  // the point balanced over the ankles, from the root
-  // place_about_centre_of_mass: the centre of mass from the root, averaged over about a step.
+  // centre_of_mass_placement: the centre of mass from the root, averaged over about a step.
   std::optional<Eigen::Vector2d> step_com_;
 };
 

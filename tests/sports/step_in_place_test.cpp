@@ -58,7 +58,7 @@ Drift step_in_place(StepGains gains, std::uint64_t seed, double seconds) {
 // about the centre of mass, at most 0.004 m/s forward or back and 0.012 sideways.
 TEST(StepInPlace, WithTheGuardUpTheFeetPlacedAboutTheCentreOfMassHoldTheSpot) {
   StepGains gains = boxing_step_gains();
-  gains.place_about_centre_of_mass = true;
+  gains.centre_of_mass_placement = 1;
   for (std::uint64_t seed : {1, 2, 3}) {
     const Drift d = step_in_place(gains, seed, 6.0);
     EXPECT_FALSE(d.fell) << "seed " << seed;
