@@ -27,9 +27,17 @@ constexpr double kPlantFacing = 0.25;     // ...facing the opponent within this 
 constexpr double kPlantSpeed = 0.3;       // ...and moving slower than this (m/s)
 constexpr double kReplantBeyond_m = 0.3;  // planted, it steps again when this far off its range
 constexpr double kReplantFacing = 0.6;    // or the opponent this far to the side (rad)
-constexpr double kPlantedLeg_m = 0.74;    // hip to ankle planted: knees bent, centre of mass low
-constexpr double kUpright = 2.0;          // hip correction per radian of pelvis tilt
-constexpr double kAnkleP = 1.0, kAnkleD = 1.0;  // ankle per m of centre of mass off, per m/s
+// ...or it moves faster than this (m/s): pushed, a planted boxer steps at once to catch itself
+// (with the feet placed about the centre of mass, seeds 1-20: stepping off only 0.3 m off its
+// range, it was already moving 0.7 m/s, tipping, and fell within a second in 28 of 33).
+constexpr double kReplantSpeed = 0.35;
+// The feet are placed halfway between the root and the centre of mass, which the guard holds
+// 4 cm ahead: placed about the root, the boxer drifted forward into the other and circled it;
+// about the centre of mass, it faced, planted and punched much more, but fell 6 times a minute.
+constexpr double kCentreOfMassPlacement = 0.5;
+constexpr double kPlantedLeg_m = 0.74;  // hip to ankle planted: knees bent, centre of mass low
+constexpr double kUpright = 2.0;        // hip correction per radian of pelvis tilt
+constexpr double kAnkleP = 3.0, kAnkleD = 2.0;  // ankle per m of centre of mass off, per m/s
 constexpr double kGuardElbow = 1.8;             // rad
 constexpr double kGuardForward = 0.6;           // the guard's upper arm: forward, out and down
 constexpr double kPunchEvery_s = 0.6;           // a punch, then the other hand
@@ -104,6 +112,7 @@ StepGains boxing_step_gains() {
   g.turn_start = 0.3;  // keep facing the opponent, stepping in place if need be
   g.max_speed = kMaxSpeed;
   g.balance = {2.0, 2.0, 0.0, 2.0};  // standing in the rest, gloves up
+  g.centre_of_mass_placement = kCentreOfMassPlacement;
   return g;
 }
 
@@ -147,7 +156,8 @@ void ScriptedBoxingPolicy::act(std::span<const float> o, std::span<float> a) {
   }
   if (resting) {
   } else if (planted_) {
-    if (std::abs(off) > kReplantBeyond_m || std::abs(bearing) > kReplantFacing) {
+    if (std::abs(off) > kReplantBeyond_m || std::abs(bearing) > kReplantFacing ||
+        root_velocity(o).head<2>().norm() > kReplantSpeed) {
       planted_ = false;
       legs_.emplace(gains_, control_dt_);  // a fresh step from both feet down
     }
@@ -155,8 +165,12 @@ void ScriptedBoxingPolicy::act(std::span<const float> o, std::span<float> a) {
              root_velocity(o).head<2>().norm() < kPlantSpeed) {
     planted_ = true;
   }
+  const Eigen::Vector3d com = smpl_model().centre_of_mass(smpl_model().pose_from_observation(o));
+  // Stepping, it stands balancing its centre of mass (not its root) and steps to catch itself
+  // when that moves off the feet or the body moves fast (StepGains::recover_m, recover_speed).
+  if (!planted_) legs_->balance_centre_of_mass(com, 0);
   if (planted_)
-    plant(o, a, smpl_model().centre_of_mass(smpl_model().pose_from_observation(o)));
+    plant(o, a, com);
   else if (resting)
     legs_->act(o, Eigen::Vector2d::Zero(), 0, a);
   else
