@@ -10,6 +10,7 @@
 
 #include "registry.h"
 #include "scripted_boxing.h"
+#include "solo_root.h"
 #include "step_controller.h"
 
 namespace olympics::client {
@@ -24,33 +25,27 @@ struct Drift {
 // starting heading held, its guard up, for `seconds`.
 Drift step_in_place(StepGains gains, std::uint64_t seed, double seconds) {
   auto match = sports::sport_or_throw("sandbox").create({"solo", seed, 60.0, {}});
-  std::vector<float> obs(match->obs_size()), act(match->action_size()), poses;
+  std::vector<float> obs(match->obs_size()), act(match->action_size());
   gains.start_m = 0;   // it steps from the first tick...
   gains.arrive_m = 0;  // ...and never stops
   StepController legs(gains, match->control_dt());
-  auto root = [&](double& yaw) {
-    match->scene_poses(poses);  // the root first: position, then quaternion (w, x, y, z)
-    const Eigen::Quaterniond q(poses[3], poses[4], poses[5], poses[6]);
-    const Eigen::Vector3d forward = q * Eigen::Vector3d::UnitX();
-    yaw = std::atan2(forward.y(), forward.x());
-    return Eigen::Vector2d(poses[0], poses[1]);
-  };
-  double start_yaw = 0, yaw = 0;
-  const Eigen::Vector2d spot = root(start_yaw);
-  Eigen::Vector2d after_1s = spot;
+  const sports::SoloRoot spot = sports::solo_root(*match);
+  sports::SoloRoot after_1s = spot;
   Drift d;
   const int ticks = static_cast<int>(std::lround(seconds / match->control_dt()));
   for (int tick = 1; tick <= ticks; ++tick) {
     match->observe(0, obs);
-    const Eigen::Vector2d at = root(yaw);
+    const sports::SoloRoot now = sports::solo_root(*match);
     std::fill(act.begin(), act.end(), 0.0f);
     hold_guard(obs, act);
-    legs.act(obs, Eigen::Rotation2Dd(-yaw) * (spot - at), start_yaw - yaw, act);
+    legs.act(obs, Eigen::Rotation2Dd(-now.yaw) * (spot.position - now.position), spot.yaw - now.yaw,
+             act);
     match->step({std::span<const float>(act)});
     if (match->outcome().done[0]) return d.fell = true, d;
-    if (std::abs(tick * match->control_dt() - 1.0) < 1e-6) after_1s = root(yaw);
+    if (std::abs(tick * match->control_dt() - 1.0) < 1e-6) after_1s = sports::solo_root(*match);
   }
-  d.per_s = Eigen::Rotation2Dd(-start_yaw) * (root(yaw) - after_1s) / (seconds - 1.0);
+  const Eigen::Vector2d moved = sports::solo_root(*match).position - after_1s.position;
+  d.per_s = Eigen::Rotation2Dd(-spot.yaw) * moved / (seconds - 1.0);
   return d;
 }
 
