@@ -27,9 +27,17 @@ constexpr double kPlantFacing = 0.25;     // ...facing the opponent within this 
 constexpr double kPlantSpeed = 0.3;       // ...and moving slower than this (m/s)
 constexpr double kReplantBeyond_m = 0.3;  // planted, it steps again when this far off its range
 constexpr double kReplantFacing = 0.6;    // or the opponent this far to the side (rad)
-constexpr double kPlantedLeg_m = 0.74;    // hip to ankle planted: knees bent, centre of mass low
-constexpr double kUpright = 2.0;          // hip correction per radian of pelvis tilt
-constexpr double kAnkleP = 1.0, kAnkleD = 1.0;  // ankle per m of centre of mass off, per m/s
+// ...or it moves faster than this (m/s): pushed, a planted boxer steps at once to catch itself
+// (with the feet placed about the centre of mass, seeds 1-20: stepping off only 0.3 m off its
+// range, it was already moving 0.7 m/s, tipping, and fell within a second in 28 of 33).
+constexpr double kReplantSpeed = 0.35;
+// The feet are placed halfway between the root and the centre of mass, which the guard holds
+// 4 cm ahead: placed about the root, the boxer drifted forward into the other and circled it;
+// about the centre of mass, it faced, planted and punched much more, but fell 6 times a minute.
+constexpr double kCentreOfMassPlacement = 0.5;
+constexpr double kPlantedLeg_m = 0.74;  // hip to ankle planted: knees bent, centre of mass low
+constexpr double kUpright = 2.0;        // hip correction per radian of pelvis tilt
+constexpr double kAnkleP = 3.0, kAnkleD = 2.0;  // ankle per m of centre of mass off, per m/s
 constexpr double kGuardElbow = 1.8;             // rad
 constexpr double kGuardForward = 0.6;           // the guard's upper arm: forward, out and down
 constexpr double kPunchEvery_s = 0.6;           // a punch, then the other hand
@@ -42,7 +50,7 @@ constexpr double kPunchLean = 0.4;     // rad, the trunk pitched forward
 constexpr double kPunchTurn = 0.4;     // rad, the trunk turned about the spine
 constexpr double kPunchReach_m = 0.9;  // shoulder to the chest's centre, at most
 
-void guard(std::span<const float> o, std::span<float> a, Arm arm) {
+void guard_arm(std::span<const float> o, std::span<float> a, Arm arm) {
   const double side = arm == Arm::Right ? -1 : 1;
   point_arm(o, a, arm, {kGuardForward, 0.45 * side, -0.7},
             arm == Arm::Right ? M_PI / 2 : -M_PI / 2);
@@ -99,6 +107,20 @@ const control::BodyModel& smpl_model() {
 
 }  // namespace
 
+StepGains boxing_step_gains() {
+  StepGains g;
+  g.turn_start = 0.3;  // keep facing the opponent, stepping in place if need be
+  g.max_speed = kMaxSpeed;
+  g.balance = {2.0, 2.0, 0.0, 2.0};  // standing in the rest, gloves up
+  g.centre_of_mass_placement = kCentreOfMassPlacement;
+  return g;
+}
+
+void hold_guard(std::span<const float> o, std::span<float> a) {
+  guard_arm(o, a, Arm::Left);
+  guard_arm(o, a, Arm::Right);
+}
+
 void ScriptedBoxingPolicy::start(const MatchInfo& match) {
   if (match.sport != "boxing")
     throw std::invalid_argument("the scripted boxing policy plays boxing, not " + match.sport);
@@ -106,10 +128,7 @@ void ScriptedBoxingPolicy::start(const MatchInfo& match) {
   blocks_ = {l.offset("opponent_root", "position"), l.offset("opponent_targets", "chest"),
              l.offset("bout", "resting")};
   control_dt_ = match.control_dt;
-  gains_ = StepGains();
-  gains_.turn_start = 0.3;  // keep facing the opponent, stepping in place if need be
-  gains_.max_speed = kMaxSpeed;
-  gains_.balance = {2.0, 2.0, 0.0, 2.0};  // standing in the rest, gloves up
+  gains_ = boxing_step_gains();
   legs_.emplace(gains_, control_dt_);
   clock_s_ = 0;
   planted_ = was_resting_ = false;
@@ -137,7 +156,8 @@ void ScriptedBoxingPolicy::act(std::span<const float> o, std::span<float> a) {
   }
   if (resting) {
   } else if (planted_) {
-    if (std::abs(off) > kReplantBeyond_m || std::abs(bearing) > kReplantFacing) {
+    if (std::abs(off) > kReplantBeyond_m || std::abs(bearing) > kReplantFacing ||
+        root_velocity(o).head<2>().norm() > kReplantSpeed) {
       planted_ = false;
       legs_.emplace(gains_, control_dt_);  // a fresh step from both feet down
     }
@@ -145,15 +165,18 @@ void ScriptedBoxingPolicy::act(std::span<const float> o, std::span<float> a) {
              root_velocity(o).head<2>().norm() < kPlantSpeed) {
     planted_ = true;
   }
+  const Eigen::Vector3d com = smpl_model().centre_of_mass(smpl_model().pose_from_observation(o));
+  // Stepping, it stands balancing its centre of mass (not its root) and steps to catch itself
+  // when that moves off the feet or the body moves fast (StepGains::recover_m, recover_speed).
+  if (!planted_) legs_->balance_centre_of_mass(com, 0);
   if (planted_)
-    plant(o, a, smpl_model().centre_of_mass(smpl_model().pose_from_observation(o)));
+    plant(o, a, com);
   else if (resting)
     legs_->act(o, Eigen::Vector2d::Zero(), 0, a);
   else
     legs_->act(o, towards * off * kGapShare, bearing, a);
 
-  guard(o, a, Arm::Left);
-  guard(o, a, Arm::Right);
+  hold_guard(o, a);
   if (resting || !planted_ || distance > kInRange_m) {
     clock_s_ = 0;
     return;

@@ -19,6 +19,12 @@
 
 namespace olympics::client {
 
+// The boxer's legs: the stepping controller, slow in the approach, turning to face the opponent.
+StepGains boxing_step_gains();
+
+// The boxer's guard: upper arms forward and down, elbows bent, gloves up before the chin.
+void hold_guard(std::span<const float> observation, std::span<float> action);
+
 class ScriptedBoxingPolicy : public Policy {
  public:
   void start(const MatchInfo& match) override;

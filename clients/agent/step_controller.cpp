@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "control/body_model.h"
 #include "smpl_observation.h"
 
 namespace olympics::client {
@@ -88,6 +89,15 @@ bool StepController::losing_balance(std::span<const float> o) const {
          root_velocity(o).head<2>().norm() > gains_.recover_speed;
 }
 
+Eigen::Vector2d StepController::placement_origin(std::span<const float> o) {
+  if (gains_.centre_of_mass_placement == 0) return Eigen::Vector2d::Zero();
+  static const control::BodyModel model = control::BodyModel::humanoid(core::HumanoidKind::Smpl);
+  const Eigen::Vector2d com = model.centre_of_mass(model.pose_from_observation(o)).head<2>();
+  if (!step_com_) step_com_ = com;
+  *step_com_ += (com - *step_com_) * std::min(1.0, control_dt_ / gains_.step_s);
+  return gains_.centre_of_mass_placement * *step_com_;
+}
+
 void StepController::begin_step(std::span<const float> o, bool left_swings) {
   left_swings_ = left_swings;
   phase_s_ = 0;
@@ -121,8 +131,8 @@ void StepController::act(std::span<const float> o, const Eigen::Vector2d& target
   const int swing_hip = left_swings_ ? kLHip : kRHip, stance_hip = left_swings_ ? kRHip : kLHip;
   const double side = left_swings_ ? 1.0 : -1.0;
 
-  // Where the swing foot goes: under where the root will be, half a step on, corrected by the
-  // velocity error, to its own side.
+  // Where the swing foot goes: under where the root (or the centre of mass) will be, half a step
+  // on, corrected by the velocity error, to its own side.
   Eigen::Vector2d desired_v = Eigen::Vector2d::Zero();
   if (distance > 1e-9)
     desired_v = target / distance * std::min(g.max_speed, g.speed_per_m * distance);
@@ -132,6 +142,7 @@ void StepController::act(std::span<const float> o, const Eigen::Vector2d& target
     desired_v.x() = std::clamp(desired_v.x(), -g.max_forward_speed, g.max_forward_speed);
   const double remaining = g.step_s - phase_s_;
   Eigen::Vector2d foot = v * (remaining + g.lead_s) + g.velocity_gain * (v - desired_v);
+  foot += placement_origin(o);
   foot.y() += side * g.stance_width;
   // Moving sideways, the foot on the side of the motion leads; side_step moves where it lands.
   const bool leads = side * desired_v.y() > 0;

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "registry.h"
+#include "solo_root.h"
 #include "step_controller.h"
 
 namespace olympics::client {
@@ -22,14 +23,12 @@ struct Walked {
 Walked walk(const StepGains& gains, const Eigen::Vector2d& direction, double metres,
             double seconds) {
   auto match = sports::sport_or_throw("sandbox").create({"solo", 1, 60.0, {}});
-  std::vector<float> obs(match->obs_size()), act(match->action_size()), poses;
+  std::vector<float> obs(match->obs_size()), act(match->action_size());
   StepController legs(gains, match->control_dt());
   auto root = [&](double& yaw) {
-    match->scene_poses(poses);  // the root first: position, then quaternion (w, x, y, z)
-    const Eigen::Quaterniond q(poses[3], poses[4], poses[5], poses[6]);
-    const Eigen::Vector3d forward = q * Eigen::Vector3d::UnitX();
-    yaw = std::atan2(forward.y(), forward.x());
-    return Eigen::Vector2d(poses[0], poses[1]);
+    const sports::SoloRoot r = sports::solo_root(*match);
+    yaw = r.yaw;
+    return r.position;
   };
   double start_yaw = 0, yaw = 0;
   const Eigen::Vector2d start = root(start_yaw);
