@@ -28,18 +28,19 @@ constexpr double kDownBelow_m = -0.4;  // a teammate's root this far below mine:
 constexpr double kShootFrom_m = 11.0;
 // An opponent has the ball: I stay this far from the ball, and at least kKeepOffHolder_m from
 // the opponent. From 1.5 m (issue 30's third round) the ball changed sides 3.5 times a minute
-// in 2v2: every push the holder made toward its goal knocked the ball nearer the yielder, who
-// took it over, and the ball stayed in midfield (the side nearest it was within 11 m of the
+// in 2v2 (a push toward the holder's goal could bring the ball nearer the yielder, who then
+// took it over) and the ball stayed in midfield (the side nearest it was within 11 m of the
 // goal it attacks 12% of the time). From 3 m (match tuning seeds 1-9, 31-39, 2v2, 72 minutes):
 // 2.4 changes a minute, 17% of the time within 11 m, kicks 51 -> 79, goals 10 -> 13, falls 125
-// -> 116.
+// -> 116. With the aim below, on unseen match seeds 160001-160048: falls 411 -> 335 in 2v2 and
+// 389 -> 262 in 1v1 (resolved), goals 23 -> 20 and 55 -> 62 (not resolved); docs/soccer.md.
 constexpr double kKeepOffBall_m = 3.0;
 constexpr double kKeepOffHolder_m = 1.5;
 // An opponent this near the middle of the goal I attack is in the way of a shot at the middle:
 // I aim inside the post away from it. 3 m took the penalty keeper (0.5 m out); 6 m takes the 2v2
-// guard too (the second player, 5 m out on the line from its goal to the ball), who touched 7
-// of 20 shots on target first (the tuning seeds above, with the 3 m keep-off; with 6 m 2 of 18,
-// goals 13 -> 17, falls 116 -> 106).
+// guard too (the second player, 5 m out on the line from its goal to the ball, in the way of a
+// shot at the middle): an opponent touched 7 of 20 shots on target first (the tuning seeds
+// above, with the 3 m keep-off; with 6 m 2 of 18, goals 13 -> 17, falls 116 -> 106).
 constexpr double kKeeperNear_m = 6.0;
 constexpr double kShotAim_m = 1.3;  // ...and I aim this far off the goal's middle, away
 // The kick (penalty modes).

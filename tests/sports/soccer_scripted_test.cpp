@@ -188,11 +188,11 @@ TEST(ScriptedSoccer, InAMatchAPlayerKeepsOffABallTheOpponentIsNearer) {
 }
 
 // Issue 30, soccer tactics: in 2v2 the second player guards 5 m in front of its goal, on the line
-// from the goal's middle to the ball, in the way of a shot at the middle (it touched 7 of 20
-// shots on target first, match tuning seeds 1-9 and 31-39). A shot is aimed 1.3 m off the middle
-// away from an opponent within 6 m of it, as from a keeper on its line; an opponent further out
-// (keeping off the ball) leaves the aim at the middle. Before, only an opponent within 3 m moved
-// the aim, so the guard's shot went at the middle.
+// from the goal's middle to the ball, in the way of a shot at the middle (an opponent touched 7
+// of 20 shots on target first, match tuning seeds 1-9 and 31-39). A shot is aimed 1.3 m off the
+// middle away from an opponent within 6 m of it, as from a keeper on its line; an opponent further
+// out (keeping off the ball) leaves the aim at the middle. Before, only an opponent within 3 m
+// moved the aim, so the guard's shot went at the middle.
 TEST(ScriptedSoccer, AShotIsAimedAwayFromTheGuardInFrontOfTheGoal) {
   client::ScriptedSoccerPolicy::View v;
   v.goal = {10, 0};
