@@ -5,11 +5,12 @@
 //   ball) walks (StepController) to a point behind the ball on the line from its aim through the
 //   ball, going round the ball when it stands on the wrong side; lined up, it walks through the
 //   ball: its swinging feet knock it on, a dribble that ends in a shot when the feet meet the
-//   ball at speed. It aims at the goal's middle, or with a keeper in the goal, inside the post
-//   away from the keeper. In a match a ball within 11 m of the goal is kicked (SoccerKick), not
-//   dribbled, once it lies on the kicking foot's side of the kicker's line;
-// - in a match a player keeps off a ball an opponent is nearer (1.5 m, goal-side, beside the
-//   opponent's way to the goal): most falls came from players walking into each other;
+//   ball at speed. It aims at the goal's middle, or with a keeper in the goal (or the 2v2 guard in
+//   front of it), inside the post away from it. In a match a ball within 11 m of the goal is kicked
+//   (SoccerKick), not dribbled, once it lies on the kicking foot's side of the kicker's line;
+// - in a match a player keeps off a ball an opponent is nearer (3 m, goal-side, beside the
+//   opponent's way to the goal): most falls came from players walking into each other, and
+//   from nearer, the holder's pushes gave the ball straight to the one keeping off;
 // - the goalkeeper (penalty_kick_keeper, the side defending the near goal) stands on its line
 //   between the ball and the goal's middle, moves across to where a shot will cross the line
 //   and spreads its arms to block;
@@ -57,10 +58,12 @@ class ScriptedSoccerPolicy : public Policy {
     bool theirs_to_take = false;  // the other side has a restart to take
     bool mate_down = false;
   };
+  // Where a shot is aimed: the goal's middle, or with an opponent within 6 m of it (a keeper, the
+  // 2v2 guard), 1.3 m off the middle on the side away from it (inside the post).
+  static Eigen::Vector2d shot_aim(const View& v);
 
  private:
   View see(std::span<const float> o) const;
-  static Eigen::Vector2d shot_aim(const View& v);
   void keep_goal(std::span<const float> o, const View& v, std::span<float> a);
   void chase(std::span<const float> o, const View& v, std::span<float> a);
   void kick_chase(std::span<const float> o, const View& v, std::span<float> a);
