@@ -96,16 +96,14 @@ std::vector<Eigen::Matrix3d> BodyModel::relative_rotations(const BodyPose& pose)
 
 Eigen::Vector3d BodyModel::centre_of_mass(const BodyPose& pose) const {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  for (int i = 0; i < size(); ++i)
-    sum += bodies_[i].mass * (pose.position[i] + pose.rotation[i] * bodies_[i].com);
+  for (int i = 0; i < size(); ++i) sum += bodies_[i].mass * body_com(pose, i);
   return sum / total_mass_;
 }
 
 Eigen::Vector3d BodyModel::gravity_torque(const BodyPose& pose, int body) const {
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();
   for (int b : subtree_[body]) torque += weight_torque(pose, b, pose.position[body]);
-  const int parent = bodies_[body].parent;
-  return parent < 0 ? torque : Eigen::Vector3d(pose.rotation[parent].transpose() * torque);
+  return in_parent_frame(pose, body, torque);
 }
 
 Eigen::Vector3d BodyModel::turning_torque(const BodyPose& pose, int body,
@@ -113,29 +111,36 @@ Eigen::Vector3d BodyModel::turning_torque(const BodyPose& pose, int body,
                                           double acceleration) const {
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();
   for (int b : subtree_[body]) {
-    const Eigen::Vector3d com = pose.position[b] + pose.rotation[b] * bodies_[b].com;
+    const Eigen::Vector3d com = body_com(pose, b);
     Eigen::Vector3d out = com - pivot;
     out.z() = 0;
     const Eigen::Vector3d accel =
         acceleration * Eigen::Vector3d::UnitZ().cross(out) - rate * rate * out;
     torque += (com - pose.position[body]).cross(Eigen::Vector3d(-bodies_[b].mass * accel));
   }
-  const int parent = bodies_[body].parent;
-  return parent < 0 ? torque : Eigen::Vector3d(pose.rotation[parent].transpose() * torque);
+  return in_parent_frame(pose, body, torque);
 }
 
 Eigen::Vector3d BodyModel::gravity_torque_above(const BodyPose& pose, int body) const {
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();
   for (int b = 0; b < size(); ++b)
     if (!in_subtree(b, body)) torque += weight_torque(pose, b, pose.position[body]);
+  return in_parent_frame(pose, body, torque);
+}
+
+Eigen::Vector3d BodyModel::body_com(const BodyPose& pose, int b) const {
+  return pose.position[b] + pose.rotation[b] * bodies_[b].com;
+}
+
+Eigen::Vector3d BodyModel::in_parent_frame(const BodyPose& pose, int body,
+                                           const Eigen::Vector3d& torque) const {
   const int parent = bodies_[body].parent;
   return parent < 0 ? torque : Eigen::Vector3d(pose.rotation[parent].transpose() * torque);
 }
 
 Eigen::Vector3d BodyModel::weight_torque(const BodyPose& pose, int b,
                                          const Eigen::Vector3d& about) const {
-  const Eigen::Vector3d com = pose.position[b] + pose.rotation[b] * bodies_[b].com;
-  return (com - about).cross(Eigen::Vector3d(0, 0, -kGravity * bodies_[b].mass));
+  return (body_com(pose, b) - about).cross(Eigen::Vector3d(0, 0, -kGravity * bodies_[b].mass));
 }
 
 }  // namespace olympics::client::control

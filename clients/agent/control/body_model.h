@@ -74,6 +74,11 @@ class BodyModel {
   Eigen::Vector3d gravity_torque_above(const BodyPose& pose, int body) const;
 
  private:
+  // Body b's centre of mass, heading frame.
+  Eigen::Vector3d body_com(const BodyPose& pose, int b) const;
+  // A torque about joint `body` (heading frame) in its parent body's frame (the root's: as is).
+  Eigen::Vector3d in_parent_frame(const BodyPose& pose, int body,
+                                  const Eigen::Vector3d& torque) const;
   // Body b's weight's torque about a point, heading frame.
   Eigen::Vector3d weight_torque(const BodyPose& pose, int b, const Eigen::Vector3d& about) const;
 
