@@ -3,8 +3,8 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
-#include "control/body_model.h"
 #include "smpl_observation.h"
 
 namespace olympics::client {
@@ -89,12 +89,14 @@ bool StepController::losing_balance(std::span<const float> o) const {
          root_velocity(o).head<2>().norm() > gains_.recover_speed;
 }
 
-Eigen::Vector2d StepController::placement_origin(std::span<const float> o) {
+Eigen::Vector2d StepController::placement_origin() {
   if (gains_.centre_of_mass_placement == 0) return Eigen::Vector2d::Zero();
-  static const control::BodyModel model = control::BodyModel::humanoid(core::HumanoidKind::Smpl);
-  const Eigen::Vector2d com = model.centre_of_mass(model.pose_from_observation(o)).head<2>();
-  if (!step_com_) step_com_ = com;
-  *step_com_ += (com - *step_com_) * std::min(1.0, control_dt_ / gains_.step_s);
+  if (!com_)
+    throw std::logic_error(
+        "StepController: centre_of_mass_placement is above 0 but no centre of mass was given; "
+        "call set_centre_of_mass before act");
+  if (!step_com_) step_com_ = com_;
+  *step_com_ += (*com_ - *step_com_) * std::min(1.0, control_dt_ / gains_.step_s);
   return gains_.centre_of_mass_placement * *step_com_;
 }
 
@@ -142,7 +144,7 @@ void StepController::act(std::span<const float> o, const Eigen::Vector2d& target
     desired_v.x() = std::clamp(desired_v.x(), -g.max_forward_speed, g.max_forward_speed);
   const double remaining = g.step_s - phase_s_;
   Eigen::Vector2d foot = v * (remaining + g.lead_s) + g.velocity_gain * (v - desired_v);
-  foot += placement_origin(o);
+  foot += placement_origin();
   foot.y() += side * g.stance_width;
   // Moving sideways, the foot on the side of the motion leads; side_step moves where it lands.
   const bool leads = side * desired_v.y() > 0;

@@ -105,11 +105,17 @@ class StepController {
     balance_com_ = true;
   }
 
+  // The whole body's centre of mass this tick (heading frame, from the root;
+  // control::BodyModel::centre_of_mass), where StepGains::centre_of_mass_placement reckons the
+  // swing foot's placement from: given before every act() when that share is above 0 (the caller
+  // has the body's model; SMPL and SMPL-X alike).
+  void set_centre_of_mass(const Eigen::Vector3d& offset) { com_ = offset.head<2>(); }
+
  private:
   void stand(std::span<const float> o, std::span<float> a) const;
   void begin_step(std::span<const float> o, bool left_swings);
   bool losing_balance(std::span<const float> o) const;
-  Eigen::Vector2d placement_origin(std::span<const float> o);
+  Eigen::Vector2d placement_origin();
 
   StepGains gains_;
   double control_dt_;
@@ -119,8 +125,9 @@ class StepController {
   Eigen::Vector2d lift_off_{0, 0};
   bool balance_com_ = false;
   Eigen::Vector2d com_offset_{0, 0};  // the point balanced over the ankles, from the root
-  // centre_of_mass_placement: the centre of mass from the root, averaged over about a step.
-  std::optional<Eigen::Vector2d> step_com_;
+  // centre_of_mass_placement: the centre of mass from the root this tick (set_centre_of_mass),
+  // and averaged over about a step.
+  std::optional<Eigen::Vector2d> com_, step_com_;
 };
 
 }  // namespace olympics::client

@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "control/body_model.h"
 #include "registry.h"
 #include "scripted_boxing.h"
 #include "solo_root.h"
@@ -29,6 +30,7 @@ Drift step_in_place(StepGains gains, std::uint64_t seed, double seconds) {
   gains.start_m = 0;   // it steps from the first tick...
   gains.arrive_m = 0;  // ...and never stops
   StepController legs(gains, match->control_dt());
+  const control::BodyModel model = control::BodyModel::humanoid(core::HumanoidKind::Smpl);
   const sports::SoloRoot spot = sports::solo_root(*match);
   sports::SoloRoot after_1s = spot;
   Drift d;
@@ -38,6 +40,7 @@ Drift step_in_place(StepGains gains, std::uint64_t seed, double seconds) {
     const sports::SoloRoot now = sports::solo_root(*match);
     std::fill(act.begin(), act.end(), 0.0f);
     hold_guard(obs, act);
+    legs.set_centre_of_mass(model.centre_of_mass(model.pose_from_observation(obs)));
     legs.act(obs, Eigen::Rotation2Dd(-now.yaw) * (spot.position - now.position), spot.yaw - now.yaw,
              act);
     match->step({std::span<const float>(act)});
