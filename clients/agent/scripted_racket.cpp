@@ -319,17 +319,14 @@ void ScriptedRacketPolicy::plan(std::span<const float> o, const CourtFrame& cour
     // forehand (turning left) right of the shoulder, a backhand left of it.
     const Eigen::Vector3d root = best_reachable ? court.root : Eigen::Vector3d(stance_of(*best));
     const Eigen::Vector3d pivot = root + court.vector(shoulder);
-    Eigen::Vector3d radius = best->position - Eigen::Vector3d(face_back, 0, 0) - pivot;
-    radius.z() = 0;
-    Eigen::Vector3d tangent(-radius.y(), radius.x(), 0);
-    tangent.normalize();
-    if (tangent.x() < 0) tangent = -tangent;
-    if (tangent.x() > 0.5 && radius.norm() > 0.2) {
+    const auto tangent =
+        control::arc_tangent(best->position - Eigen::Vector3d(face_back, 0, 0), pivot);
+    if (tangent) {
       // The least listed speed that returns the ball in, by bisection (a faster face sends the
       // ball further: a search over the normals at every speed costs too much of the tick).
       auto shot_at = [&](double speed) {
         return control::plan_shot_at_speed(sport_->path, best->position, best->velocity,
-                                           speed * tangent, play.aim, play.net_margin, 0.5);
+                                           speed * *tangent, play.aim, play.net_margin, 0.5);
       };
       std::optional<control::ShotPlan> shot;
       int lo = -1, hi = static_cast<int>(play.arc_speeds.size()) - 1;
@@ -510,32 +507,32 @@ bool ScriptedRacketPolicy::plan_serve(std::span<const float> o, const CourtFrame
     pivot = shoulder;
     serve = control::plan_arc_serve(sport_->path, toss, shoulder, reach, sport_->face_back,
                                     court.point(play.sweet_spot), aim, play.net_margin,
-                                    control::kServeSoonestS, *pivot, play.serve_speeds);
+                                    control::kServeSoonestS, play.serve_speeds);
   } else {
     serve = control::plan_serve(sport_->path, toss, shoulder, reach, sport_->face_back,
                                 court.point(play.sweet_spot), aim, play.net_margin,
                                 control::kServeSoonestS);
   }
+  if (!serve) return true;
   // Doubles: the face and its line turned further across, for the arm's error (Play).
   const Eigen::Matrix3d turn =
       Eigen::AngleAxisd(doubles_ ? play.doubles_serve_turn : 0.0, Eigen::Vector3d::UnitZ())
           .toRotationMatrix();
-  Eigen::Vector3d normal = serve ? serve->shot.face.normal : Eigen::Vector3d::UnitX();
+  Eigen::Vector3d normal = serve->shot.face.normal;
   if (pivot) {  // the arc serve: the face tilted down and turned right for the arm's error (Play)
     const Eigen::Vector3d across = Eigen::Vector3d::UnitZ().cross(normal).normalized();
     normal = Eigen::AngleAxisd(-play.serve_turn_right, Eigen::Vector3d::UnitZ()) *
              Eigen::AngleAxisd(play.serve_tilt_down, across) * normal;
   }
-  if (serve)
-    stroke_ = Stroke{serve->contact.time,
-                     serve->contact.position,
-                     turn * normal,
-                     turn * serve->shot.face.direction,
-                     serve->shot.face.speed,
-                     true,
-                     court.root,
-                     pivot,
-                     true};
+  stroke_ = Stroke{serve->contact.time,
+                   serve->contact.position,
+                   turn * normal,
+                   turn * serve->shot.face.direction,
+                   serve->shot.face.speed,
+                   true,
+                   court.root,
+                   pivot,
+                   true};
   return true;
 }
 

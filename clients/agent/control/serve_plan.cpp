@@ -151,19 +151,13 @@ std::optional<ServePlan> plan_arc_serve(const BallPath& path, const std::vector<
                                         const Eigen::Vector3d& shoulder, double reach,
                                         double face_back, const Eigen::Vector3d& sweet_spot,
                                         const ServeAim& aim, double net_margin, double min_time,
-                                        const Eigen::Vector3d& pivot,
                                         const std::vector<double>& speeds) {
   for (const BallSample* at :
        serve_contacts(toss, shoulder, reach, face_back, sweet_spot, min_time)) {
-    // The arc's tangent at the face: turning left (a forehand) right of the pivot.
-    Eigen::Vector3d radius = at->position - Eigen::Vector3d(face_back, 0, 0) - pivot;
-    radius.z() = 0;
-    if (radius.norm() < 0.2) continue;
-    Eigen::Vector3d tangent = Eigen::Vector3d(-radius.y(), radius.x(), 0).normalized();
-    if (tangent.x() < 0) tangent = -tangent;
-    if (tangent.x() < 0.5) continue;  // the arc runs across the court there, not toward the net
+    const auto tangent = arc_tangent(at->position - Eigen::Vector3d(face_back, 0, 0), shoulder);
+    if (!tangent) continue;
     for (double speed : speeds)
-      if (auto shot = plan_shot_at_speed(path, at->position, at->velocity, speed * tangent,
+      if (auto shot = plan_shot_at_speed(path, at->position, at->velocity, speed * *tangent,
                                          aim.landing, net_margin, aim.box))
         return ServePlan{*at, *shot};
   }

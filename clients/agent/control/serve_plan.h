@@ -53,17 +53,16 @@ std::optional<ServePlan> plan_serve(const BallPath& path, const std::vector<Ball
                                     const Eigen::Vector3d& sweet_spot, const ServeAim& aim,
                                     double net_margin, double min_time);
 
-// Tennis, the serve swung on an arc about the vertical through `pivot` (the shoulder: the arm
-// turning as one, scripted_tennis_swing.h): at the same meeting points as `plan_serve`, where the
-// arc runs toward the net, the least of `speeds` (m/s of face along the arc's tangent, ascending)
-// for which a face normal sends the ball into the service box (`plan_shot_at_speed`); the
-// shot's face direction is the tangent. A level swing toward the box asks the face for about
-// 9 m/s (a ball at about 12 m/s); the arc is where this arm's face is fastest.
+// Tennis, the serve swung on an arc about the shoulder's vertical (`arc_tangent`): at the same
+// meeting points as `plan_serve`, where the arc runs toward the net, the least of `speeds` (m/s of
+// face along the arc's tangent, ascending) for which a face normal sends the ball into the service
+// box (`plan_shot_at_speed`); the shot's face direction is the tangent. A level swing toward the
+// box asks the face for about 9 m/s (a ball at about 12 m/s); the arc is where this arm's face is
+// fastest.
 std::optional<ServePlan> plan_arc_serve(const BallPath& path, const std::vector<BallSample>& toss,
                                         const Eigen::Vector3d& shoulder, double reach,
                                         double face_back, const Eigen::Vector3d& sweet_spot,
                                         const ServeAim& aim, double net_margin, double min_time,
-                                        const Eigen::Vector3d& pivot,
                                         const std::vector<double>& speeds);
 
 }  // namespace olympics::client::control

@@ -142,4 +142,15 @@ std::optional<ShotPlan> plan_shot_at_speed(const BallPath& path, const Eigen::Ve
   return best;
 }
 
+std::optional<Eigen::Vector3d> arc_tangent(const Eigen::Vector3d& face,
+                                           const Eigen::Vector3d& pivot) {
+  Eigen::Vector3d radius = face - pivot;
+  radius.z() = 0;
+  if (radius.norm() <= 0.2) return std::nullopt;
+  Eigen::Vector3d tangent = Eigen::Vector3d(-radius.y(), radius.x(), 0).normalized();
+  if (tangent.x() < 0) tangent = -tangent;
+  if (tangent.x() <= 0.5) return std::nullopt;
+  return tangent;
+}
+
 }  // namespace olympics::client::control

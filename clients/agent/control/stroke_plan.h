@@ -46,7 +46,7 @@ std::optional<ShotPlan> plan_shot(const BallPath& path, const Eigen::Vector3d& f
 
 // Where a shot must come down: a rectangle of the court (court frame, x from `lo` to `hi`).
 struct LandingArea {
-  Eigen::Vector2d lo, hi;
+  Eigen::Vector2d lo{0, 0}, hi{0, 0};
   bool contains(const Eigen::Vector2d& p) const {
     return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all();
   }
@@ -67,5 +67,12 @@ std::optional<ShotPlan> plan_shot_at_speed(const BallPath& path, const Eigen::Ve
                                            const Eigen::Vector3d& face_velocity,
                                            const Eigen::Vector2d& target, double net_margin,
                                            double inside);
+
+// An arc swing (the arm turning as one about the vertical through `pivot`,
+// scripted_tennis_swing.h): the unit direction a face at `face` moves in, taken toward the net
+// (+x); nullopt where the arc runs across the court there (less than half of it toward the net) or
+// the face is within 0.2 m of the pivot's vertical (the turn would have to be too quick).
+std::optional<Eigen::Vector3d> arc_tangent(const Eigen::Vector3d& face,
+                                           const Eigen::Vector3d& pivot);
 
 }  // namespace olympics::client::control
