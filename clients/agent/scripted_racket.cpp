@@ -75,6 +75,11 @@ struct Play {
   double follow_angle = 0.5;  // radians of follow-through
   // ...and while the legs still walk to the ball (a racket held far back topples the walker).
   double walking_back_angle = 0.4;
+  // While the legs still walk to a ball within reach, the arm readies the arc as seen from where
+  // they are taking the body, drawn back no further than `walking_back_angle`; the joint-space
+  // swing starts once they stop. false: the joint-space swing from the first tick the ball is
+  // within reach, its posture solved where the body stands (so it sweeps across as the body walks).
+  bool swing_once_settled = false;
   std::vector<double> arc_speeds;
   double arc_drive = 1;  // the arc is driven this much faster than planned (the arm lags)
   // Once the ball is within reach, the arc is swung in joint space (scripted_tennis_swing.h):
@@ -195,6 +200,15 @@ Play tennis_play() {
   // 1-400 (in / touched / falls): 0.13: 5 / 26 / 11; 0.10: 5 / 22 / 4; 0.08: 4 / 17 / 6;
   // 0.25: 5 / 23 / 56 (docs/racket-sports.md, tennis falls, second round).
   p.legs.velocity_gain = 0.10;
+  // Of 15 falls traced in 1v1 on tuning seeds 1-6, every one was the fed player sidestepping to
+  // the feed (it comes at the body; the legs put it at the sweet spot, about 1 m aside), the body
+  // running sideways at a median 1.4 m/s and, in 12, forward at 0.7-2 m/s; meanwhile the arm, in
+  // the joint-space swing from the first tick the ball was within reach, held the contact posture
+  // solved where the body stood: reaching across the body's line for a ball still 1 m to the
+  // left of where it is met, as the legs walked there. Readied from the stance instead: 1v1 tuning
+  // seeds 1-8, falls 23 in 20.5 min -> 7 in 21.0 min, points with a stroke 22.6% -> 19.0% (issue
+  // 29, tennis falls in 1v1, second round; docs/racket-sports.md).
+  p.swing_once_settled = true;
   return p;
 }
 
@@ -255,7 +269,7 @@ void ScriptedRacketPolicy::start(const MatchInfo& match) {
   stroke_.reset();
   sport_->contact_arm.clear();
   since_stroke_s_ = 1e9;
-  missed_ = false;
+  missed_ = legs_walking_ = false;
   sport_->arm.reset();
 }
 
@@ -389,6 +403,9 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
     // unseen seeds 121001 on: 36.3% -> 39.0%, docs/racket-sports.md).
     while (back > 0.02 && (contact - line * back - shoulder).norm() > rally_reach()) back -= 0.02;
   }
+  // Within reach and, where the sport waits for it, the legs no longer walking: swung from here.
+  const bool swing_ready =
+      stroke_ && stroke_->reachable && !(play.swing_once_settled && legs_walking_);
   auto ready = [&] {
     control::LimbGoal g;
     g.position = play.sweet_spot + Eigen::Vector3d(-0.1, 0, 0);
@@ -410,7 +427,7 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
             Eigen::Vector3d::UnitZ().cross(radius).dot(stroke_->direction) > 0 ? 1.0 : -1.0;
         const double angle =
             std::clamp(rate * (ahead - stroke_->time_to_hit),
-                       -std::min(stroke_->reachable ? play.max_back_angle : play.walking_back_angle,
+                       -std::min(swing_ready ? play.max_back_angle : play.walking_back_angle,
                                  rate * play.swing_s),
                        play.follow_angle);
         const Eigen::Matrix3d turn =
@@ -424,7 +441,7 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
       // Where it is then relative to where the root will be then (the body may still be moving);
       // a ball out of reach yet is prepared for as seen from where the legs are taking the body.
       CourtFrame seen_from = court;
-      if (!stroke_->reachable) seen_from.root.head<2>() = stroke_->stance.head<2>();
+      if (!swing_ready) seen_from.root.head<2>() = stroke_->stance.head<2>();
       g.position = seen_from.to_heading_point(face) - root_velocity * ahead;
       g.axis = court.to_heading_vector(normal);
       if (!stroke_->pivot && play.draw_s > 0) {
@@ -443,7 +460,7 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
     return g;
   };
   bool counter_arm = false;
-  if (play.joint_swing && stroke_ && stroke_->pivot && stroke_->reachable) {
+  if (play.joint_swing && stroke_ && stroke_->pivot && swing_ready) {
     // The posture that meets the ball where the body stands now, solved from the last tick's
     // (it changes little from tick to tick), turned back about the shoulder by the arc's angle.
     const Eigen::Vector3d contact = stroke_->ball_at - stroke_->normal * face_back;
@@ -632,6 +649,7 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
     walk = Eigen::Vector3d(play.home_x - back, home_y, 0) - court.root;
   }
   walk.z() = 0;
+  legs_walking_ = walk.norm() > 1e-9;
   legs_->balance_centre_of_mass(sport_->model.centre_of_mass(pose), play.balance_ahead);
   legs_->act(o, court.to_heading_vector(walk).head<2>(), -court.yaw, a);
   if (!legs_->stepping()) control::hold_standing_legs(sport_->model, pose, a, play.gravity_scale);

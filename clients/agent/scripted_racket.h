@@ -90,6 +90,7 @@ class ScriptedRacketPolicy : public Policy {
   Eigen::Vector3d last_ball_ = Eigen::Vector3d::Zero();  // court frame, the last tick's
   // The ball now coming was swung at and passed the racket (Play::let_go_missed).
   bool missed_ = false;
+  bool legs_walking_ = false;  // this tick the legs were asked to walk somewhere
   std::unique_ptr<Sport> sport_;
   double control_dt_ = 0;
   std::optional<StepController> legs_;

@@ -68,5 +68,29 @@ TEST(ScriptedTennisLegs, CatchTheBodyThroughTheSwing) {
   EXPECT_LE(falls, 1);
 }
 
+// The first 20 points of 1v1 tuning seeds 5-8. Main's fed player fell sidestepping to the feed
+// (it comes at the body; the legs put it at the sweet spot, about 1 m aside) while its arm held
+// the joint-space swing's contact posture, solved where the body stood, sweeping across the body
+// as it walked (issue 29, tennis falls in 1v1, second round). The arm now readies the arc as
+// seen from the stance until the legs stop walking.
+// (80 points, about 3 minutes of play.)
+TEST(ScriptedTennisLegs, ReadyTheSwingFromTheStanceWhileSidestepping) {
+  int falls = 0, struck = 0;
+  for (std::uint64_t seed : {5, 6, 7, 8}) {
+    ScriptedRacketPlay play("tennis", {"1v1", seed, 0.0, {{"format", "sets"}, {"sets_to_win", 1}}});
+    for (int points = 0; !play.over() && points < 20;) {
+      for (const auto& ev : play.tick()) {
+        const std::string call = ev.value("call", "");
+        falls += call == "fall";
+        struck += call == "hit";
+        points += call == "point";
+      }
+    }
+  }
+  std::printf("first 20 points of 1v1 seeds 5-8: %d strokes, %d falls\n", struck, falls);
+  EXPECT_LE(falls, 1);    // main: 3 (now 0)
+  EXPECT_GE(struck, 12);  // the feeds are still struck (main: 15; now 14)
+}
+
 }  // namespace
 }  // namespace olympics::client
