@@ -61,6 +61,15 @@ class ScriptedSoccerPolicy : public Policy {
   // Where a shot is aimed: the goal's middle, or with an opponent within 6 m of it (a keeper, the
   // 2v2 guard), 1.3 m off the middle on the side away from it (inside the post).
   static Eigen::Vector2d shot_aim(const View& v);
+  // Whether a kick may start now, from where its start point is (`start`, from the root), the
+  // kick's line `dir`, whether the walk is stepping and the root's velocity (heading frame). A
+  // penalty: standing within 12 cm of the start point, or walking slower than 0.45 m/s. A match
+  // kick: up to 25 cm behind it (5 cm past), slower than 0.6 m/s, and swaying toward the kicking
+  // (right) foot, faster than 0.05 m/s across the line.
+  static bool at_penalty_kick_start(const Eigen::Vector2d& start, bool stepping,
+                                    const Eigen::Vector2d& velocity);
+  static bool at_match_kick_start(const Eigen::Vector2d& start, const Eigen::Vector2d& dir,
+                                  bool stepping, const Eigen::Vector2d& velocity);
 
  private:
   View see(std::span<const float> o) const;
