@@ -251,7 +251,7 @@ void ScriptedSoccerPolicy::kick_chase(std::span<const float> o, const View& v, s
   const bool stepping = legs_ && legs_->stepping();
   // (Penalties keep the kick as issue 30's fifth round chose it: not measured there.)
   const bool ball_on_kicking_side = penalty_ || left_of(dir).dot(ball) <= kMatchKickBallLeft_m;
-  const bool ready = penalty_ ? at_penalty_kick_start(start, stepping, velocity)
+  const bool ready = penalty_ ? at_penalty_kick_start(start, stepping, root_velocity(o).norm())
                               : at_match_kick_start(start, dir, stepping, velocity);
   if (ready && under_body(kLAnkle) && under_body(kRAnkle) && rolling < kAtRest_mps &&
       std::abs(bearing(dir)) < kKickFacing && ball_on_kicking_side) {
@@ -272,8 +272,8 @@ void ScriptedSoccerPolicy::kick_chase(std::span<const float> o, const View& v, s
 }
 
 bool ScriptedSoccerPolicy::at_penalty_kick_start(const Eigen::Vector2d& start, bool stepping,
-                                                 const Eigen::Vector2d& velocity) {
-  return start.norm() < kKickFrom_m && (!stepping || velocity.norm() < kSettled_mps);
+                                                 double speed) {
+  return start.norm() < kKickFrom_m && (!stepping || speed < kSettled_mps);
 }
 
 bool ScriptedSoccerPolicy::at_match_kick_start(const Eigen::Vector2d& start,

@@ -66,8 +66,8 @@ class ScriptedSoccerPolicy : public Policy {
   // penalty: standing within 12 cm of the start point, or walking slower than 0.45 m/s. A match
   // kick: up to 25 cm behind it (5 cm past), slower than 0.6 m/s, and swaying toward the kicking
   // (right) foot, faster than 0.05 m/s across the line.
-  static bool at_penalty_kick_start(const Eigen::Vector2d& start, bool stepping,
-                                    const Eigen::Vector2d& velocity);
+  // (The penalty's speed is the root's full speed, vertical included, as the fifth round chose it.)
+  static bool at_penalty_kick_start(const Eigen::Vector2d& start, bool stepping, double speed);
   static bool at_match_kick_start(const Eigen::Vector2d& start, const Eigen::Vector2d& dir,
                                   bool stepping, const Eigen::Vector2d& velocity);
 
