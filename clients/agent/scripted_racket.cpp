@@ -269,7 +269,7 @@ void ScriptedRacketPolicy::start(const MatchInfo& match) {
   stroke_.reset();
   sport_->contact_arm.clear();
   since_stroke_s_ = 1e9;
-  missed_ = legs_walking_ = false;
+  missed_ = false;
   sport_->arm.reset();
 }
 
@@ -381,7 +381,7 @@ void ScriptedRacketPolicy::plan(std::span<const float> o, const CourtFrame& cour
 }
 
 void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& pose,
-                                     std::span<float> a) {
+                                     bool legs_walking, std::span<float> a) {
   const Play& play = sport_->play;
   const double face_back = sport_->face_back;
 
@@ -405,7 +405,7 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
   }
   // Within reach and, where the sport waits for it, the legs no longer walking: swung from here.
   const bool swing_ready =
-      stroke_ && stroke_->reachable && !(play.swing_once_settled && legs_walking_);
+      stroke_ && stroke_->reachable && !(play.swing_once_settled && legs_walking);
   auto ready = [&] {
     control::LimbGoal g;
     g.position = play.sweet_spot + Eigen::Vector3d(-0.1, 0, 0);
@@ -649,11 +649,10 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
     walk = Eigen::Vector3d(play.home_x - back, home_y, 0) - court.root;
   }
   walk.z() = 0;
-  legs_walking_ = walk.norm() > 1e-9;
   legs_->balance_centre_of_mass(sport_->model.centre_of_mass(pose), play.balance_ahead);
   legs_->act(o, court.to_heading_vector(walk).head<2>(), -court.yaw, a);
   if (!legs_->stepping()) control::hold_standing_legs(sport_->model, pose, a, play.gravity_scale);
-  drive_arm(court, pose, a);
+  drive_arm(court, pose, walk.norm() > 1e-9, a);
 }
 
 }  // namespace olympics::client

@@ -69,7 +69,8 @@ class ScriptedRacketPolicy : public Policy {
   // by the stroke planner (control/serve_plan.h).
   bool plan_serve(std::span<const float> o, const control::CourtFrame& court,
                   const control::BodyPose& pose);
-  void drive_arm(const control::CourtFrame& court, const control::BodyPose& pose,
+  // `legs_walking`: this tick the legs were asked to walk somewhere (Play::swing_once_settled).
+  void drive_arm(const control::CourtFrame& court, const control::BodyPose& pose, bool legs_walking,
                  std::span<float> a);
   // How far from the racket shoulder a rally ball is met: the arm's share of its reach and the
   // trunk's lean (m).
@@ -90,7 +91,6 @@ class ScriptedRacketPolicy : public Policy {
   Eigen::Vector3d last_ball_ = Eigen::Vector3d::Zero();  // court frame, the last tick's
   // The ball now coming was swung at and passed the racket (Play::let_go_missed).
   bool missed_ = false;
-  bool legs_walking_ = false;  // this tick the legs were asked to walk somewhere
   std::unique_ptr<Sport> sport_;
   double control_dt_ = 0;
   std::optional<StepController> legs_;
