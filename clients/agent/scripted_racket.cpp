@@ -212,6 +212,20 @@ Play tennis_play() {
   return p;
 }
 
+// The arc swing about the vertical through `pivot` that brings the face to `contact` moving at
+// `speed` (m/s) along `direction`: its turning rate (rad/s, the face's speed over its radius,
+// no less than 0.2 m) and its sense (+1: turning left).
+struct ArcTurn {
+  double rate, sense;
+};
+ArcTurn arc_turn(const Eigen::Vector3d& contact, const Eigen::Vector3d& pivot,
+                 const Eigen::Vector3d& direction, double speed) {
+  Eigen::Vector3d radius = contact - pivot;
+  radius.z() = 0;
+  return {speed / std::max(0.2, radius.norm()),
+          Eigen::Vector3d::UnitZ().cross(radius).dot(direction) > 0 ? 1.0 : -1.0};
+}
+
 }  // namespace
 
 struct ScriptedRacketPolicy::Sport {
@@ -420,11 +434,8 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
       Eigen::Vector3d face, normal = stroke_->normal;
       if (stroke_->pivot) {
         // Along the arc: the face and its normal turned about the pivot's vertical.
-        Eigen::Vector3d radius = contact - *stroke_->pivot;
-        radius.z() = 0;
-        const double rate = play.arc_drive * speed / std::max(0.2, radius.norm());
-        const double turning =
-            Eigen::Vector3d::UnitZ().cross(radius).dot(stroke_->direction) > 0 ? 1.0 : -1.0;
+        const auto [rate, turning] =
+            arc_turn(contact, *stroke_->pivot, stroke_->direction, play.arc_drive * speed);
         const double angle =
             std::clamp(rate * (ahead - stroke_->time_to_hit),
                        -std::min(swing_ready ? play.max_back_angle : play.walking_back_angle,
@@ -469,11 +480,8 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
     meet.axis = court.to_heading_vector(stroke_->normal);
     auto& posture = sport_->contact_arm;
     posture = sport_->arm.ik().solve(pose, meet, posture, posture.empty() ? 40 : 10).relative;
-    Eigen::Vector3d radius = contact - *stroke_->pivot;
-    radius.z() = 0;
-    const double rate = play.arc_drive * speed / std::max(0.2, radius.norm());
-    const double turning =
-        Eigen::Vector3d::UnitZ().cross(radius).dot(stroke_->direction) > 0 ? 1.0 : -1.0;
+    const auto [rate, turning] =
+        arc_turn(contact, *stroke_->pivot, stroke_->direction, play.arc_drive * speed);
     SwingTurn turn = swing_turn(play.ask_ahead_s + play.swing_lead_s - stroke_->time_to_hit, rate,
                                 play.max_back_angle, play.follow_angle);
     turn.angle *= turning, turn.rate *= turning, turn.acceleration *= turning;
