@@ -53,7 +53,8 @@ constexpr double kKickFacing = 0.4;    // ...facing the kick's line within this,
 // keeper) in the other half; 4 of them scored and 73 kickers fell. Waiting for the sway at the
 // start point: no keeper 221 -> 288 goals, kickers down 107 -> 65; against the keeper 158 -> 192,
 // 137 -> 101. The penalty keeps its own window and pace (with the match's, 25 cm behind and 0.6
-// m/s, no keeper: 263 goals, 162 down); a sway over 0.1 m/s: 285 goals, 80 down.
+// m/s: 263 and 164 goals, 162 and 201 down); a sway over 0.1 m/s: 285 and 192, 80 and 106.
+// Unseen seeds 180101-180500: scored 73.8% -> 94.2% and 50.8% -> 66.8% (docs/soccer.md).
 constexpr double kPenaltyKickSway_mps = 0.05;  // as a match kick's (kMatchKickSway_mps)
 // In a match a kick (the right foot's) starts only with the ball at most this far to the left
 // (the planting foot's side) of my root, across the kick's line: further left, the plant step
