@@ -63,11 +63,13 @@ class ScriptedSoccerPolicy : public Policy {
   static Eigen::Vector2d shot_aim(const View& v);
   // Whether a kick may start now, from where its start point is (`start`, from the root), the
   // kick's line `dir`, whether the walk is stepping and the root's velocity (heading frame). A
-  // penalty: within 12 cm of the start point, standing or walking slower than 0.45 m/s (`speed`:
-  // the root's full speed, vertical included, as the fifth round chose it). A match kick: up to
+  // penalty: within 12 cm of the start point, standing, or walking slower than 0.45 m/s (the
+  // root's full speed, vertical included, as the fifth round chose it) and swaying as a match
+  // kick does (issue 30's penalty sway round). A match kick: up to
   // 25 cm behind it (5 cm past), standing or slower than 0.6 m/s, and swaying toward the kicking
   // (right) foot, faster than 0.05 m/s across the line.
-  static bool at_penalty_kick_start(const Eigen::Vector2d& start, bool stepping, double speed);
+  static bool at_penalty_kick_start(const Eigen::Vector2d& start, const Eigen::Vector2d& dir,
+                                    bool stepping, const Eigen::Vector3d& velocity);
   static bool at_match_kick_start(const Eigen::Vector2d& start, const Eigen::Vector2d& dir,
                                   bool stepping, const Eigen::Vector2d& velocity);
 
