@@ -168,16 +168,16 @@ void ScriptedBoxingPolicy::act(std::span<const float> o, std::span<float> a) {
   const Eigen::Vector3d com = smpl_model().centre_of_mass(smpl_model().pose_from_observation(o));
   // Stepping, it stands balancing its centre of mass (not its root) and steps to catch itself
   // when that moves off the feet or the body moves fast (StepGains::recover_m, recover_speed).
-  if (!planted_) {
+  if (planted_) {
+    plant(o, a, com);
+  } else {
     legs_->balance_centre_of_mass(com, 0);
     legs_->set_centre_of_mass(com);  // the feet placed about it (kCentreOfMassPlacement)
+    if (resting)
+      legs_->act(o, Eigen::Vector2d::Zero(), 0, a);
+    else
+      legs_->act(o, towards * off * kGapShare, bearing, a);
   }
-  if (planted_)
-    plant(o, a, com);
-  else if (resting)
-    legs_->act(o, Eigen::Vector2d::Zero(), 0, a);
-  else
-    legs_->act(o, towards * off * kGapShare, bearing, a);
 
   hold_guard(o, a);
   if (resting || !planted_ || distance > kInRange_m) {
