@@ -485,9 +485,9 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
     SwingTurn turn = swing_turn(play.ask_ahead_s + play.swing_lead_s - stroke_->time_to_hit, rate,
                                 play.max_back_angle, play.follow_angle);
     turn.angle *= turning, turn.rate *= turning, turn.acceleration *= turning;
-    // The turn's inertial load held (the serve's since its round; the rally's since issue 29's
-    // arm round); the serve, swung at 10 m/s and more, also swings the free arm against it.
-    drive_turned_arm(sport_->model, sport_->arm.ik(), pose, posture, turn, play.gravity_scale, a);
+    // The serve is swung at 10 m/s and more: its inertial load held, the free arm against it.
+    drive_turned_arm(sport_->model, sport_->arm.ik(), pose, posture, turn, play.gravity_scale, a,
+                     stroke_->serve);
     if (stroke_->serve) {
       drive_counter_arm(sport_->model, pose, turn, play.gravity_scale, a);
       counter_arm = true;

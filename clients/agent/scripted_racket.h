@@ -57,7 +57,7 @@ class ScriptedRacketPolicy : public Policy {
     Eigen::Vector3d stance;     // where the root should be to meet it at the sweet spot
     // An arc swing turns about the vertical through here; none: a straight swing.
     std::optional<Eigen::Vector3d> pivot;
-    bool serve = false;  // the serve's (its swing also turns the free arm against the racket arm)
+    bool serve = false;  // the serve's (its swing holds the turn's load, the free arm against it)
   };
   const std::optional<Stroke>& stroke() const { return stroke_; }
 

@@ -22,7 +22,8 @@ SwingTurn swing_turn(double tau, double rate, double back, double follow) {
 
 void drive_turned_arm(const control::BodyModel& model, const control::LimbIk& ik,
                       const control::BodyPose& pose, const std::vector<Eigen::Matrix3d>& contact,
-                      const SwingTurn& turn, double gravity_scale, std::span<float> action) {
+                      const SwingTurn& turn, double gravity_scale, std::span<float> action,
+                      bool hold_turning) {
   const auto& joints = ik.joints();
   // The vertical (the heading frame's z) in the shoulder's parent frame: a turn about it there
   // turns everything below the shoulder about the shoulder's vertical.
@@ -37,9 +38,10 @@ void drive_turned_arm(const control::BodyModel& model, const control::LimbIk& ik
     const int b = joints[k].body;
     const Eigen::Vector3d velocity =
         k == 0 ? Eigen::Vector3d(turn.rate * up) : Eigen::Vector3d::Zero();
-    const Eigen::Vector3d held =
-        gravity_scale * model.gravity_torque(wanted, b) +
-        model.turning_torque(wanted, b, wanted.position[shoulder], turn.rate, turn.acceleration);
+    Eigen::Vector3d held = gravity_scale * model.gravity_torque(wanted, b);
+    if (hold_turning)
+      held +=
+          model.turning_torque(wanted, b, wanted.position[shoulder], turn.rate, turn.acceleration);
     control::write_joint(action, b,
                          control::drive_target(model.body(b), relative[b], held, velocity));
   }

@@ -29,13 +29,13 @@ SwingTurn swing_turn(double tau, double rate, double back, double follow);
 // a LimbIk solution for the contact pose in `pose`) with its first joint (the shoulder) turned
 // by `turn.angle` radians about the vertical (left positive), turning at `turn.rate`; gravity
 // compensation for `gravity_scale` times the weight of the pose wanted and velocity feed-forward
-// as target offsets (control/drive_target.h), and the turn's centripetal and tangential load on
-// each joint (BodyModel::turning_torque; a fast swing flings the racket out and drags it back
-// otherwise: the serve's face, turned at some 15 rad/s, met the ball 15 cm low; the rally's
-// forehand, at 8-11 rad/s, met it 0.85 of the planned speed, docs/racket-sports.md).
+// as target offsets (control/drive_target.h); with `hold_turning`, also the turn's centripetal and
+// tangential load on each joint (BodyModel::turning_torque; a fast swing flings the racket out and
+// drags it back otherwise: the serve's face, turned at some 15 rad/s, met the ball 15 cm low).
 void drive_turned_arm(const control::BodyModel& model, const control::LimbIk& ik,
                       const control::BodyPose& pose, const std::vector<Eigen::Matrix3d>& contact,
-                      const SwingTurn& turn, double gravity_scale, std::span<float> action);
+                      const SwingTurn& turn, double gravity_scale, std::span<float> action,
+                      bool hold_turning = false);
 
 // Writes the free (left) arm's shoulder: held out straight to the side and turned about the
 // vertical the other way from the racket arm's `turn`, so that its reaction cancels part of the
