@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <memory>
+#include <span>
 
 #include "core/control_rate.h"
 #include "policies.h"
@@ -299,6 +301,27 @@ TEST(ScriptedSoccer, In2v2AMatchKickerIsNotDownBeforeItsSwing) {
   EXPECT_LE(down_before_swing, 4) << "of " << kicks << " kicks";
 }
 
+// 2v2 from the kick-off, four scripted players, for `seconds` (or to the match's end): calls
+// `started(match, player, its observation, slot)` on the tick a player starts a kick, and
+// `stepped(match)` after every step.
+void play_2v2(std::uint64_t seed, double seconds,
+              const std::function<void(const SoccerMatch&, const client::ScriptedSoccerPolicy&,
+                                       std::span<const float>, int)>& started,
+              const std::function<void(const SoccerMatch&)>& stepped = {}) {
+  ScriptedSoccerPlay play("2v2", seed, 4);
+  auto& [m, players, o, a] = play;
+  while (m->tick() < seconds * 30 && !m->outcome().match_over) {
+    for (int s = 0; s < 4; ++s) {
+      m->observe(s, o[s]);
+      const bool kicking = players[s].kick().active();
+      players[s].act(o[s], a[s]);
+      if (!kicking && players[s].kick().active()) started(soccer(m), players[s], o[s], s);
+    }
+    m->step({a[0], a[1], a[2], a[3]});
+    if (stepped) stepped(soccer(m));
+  }
+}
+
 // Issue 30, soccer kick, seventh round: a match kick started while the body swayed toward the
 // planting (left) foot fought its own first weight shift onto the kicking foot; most of those
 // kicks met air and the kicker fell (match tuning seeds 1-24, 2v2: 10 of 57 over 4 m/s, against
@@ -313,25 +336,21 @@ TEST(ScriptedSoccer, In2v2AMatchKickStartsSwayingTowardTheKickingFootAndStrikesT
   };
   std::vector<Kick> kicks;
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
-    ScriptedSoccerPlay play("2v2", seed, 4);
-    auto& [m, players, o, a] = play;
     const std::size_t first = kicks.size();
-    while (m->tick() < 120 * 30 && !m->outcome().match_over) {
-      for (int s = 0; s < 4; ++s) {
-        m->observe(s, o[s]);
-        const bool kicking = players[s].kick().active();
-        players[s].act(o[s], a[s]);
-        if (kicking || !players[s].kick().active()) continue;
-        const Eigen::Vector2d& dir = players[s].kick_direction();
-        const Eigen::Vector2d v = client::smpl::root_velocity(o[s]).head<2>();
-        kicks.push_back({m->tick(), Eigen::Vector2d(-dir.y(), dir.x()).dot(v)});
-      }
-      m->step({a[0], a[1], a[2], a[3]});
-      const double speed = soccer(m).ball().velocity().head<2>().norm();
-      for (std::size_t k = first; k < kicks.size(); ++k)
-        if (m->tick() - kicks[k].start_tick <= 75)
-          kicks[k].top_speed = std::max(kicks[k].top_speed, speed);
-    }
+    play_2v2(
+        seed, 120,
+        [&](const SoccerMatch& m, const client::ScriptedSoccerPolicy& player,
+            std::span<const float> o, int) {
+          const Eigen::Vector2d& dir = player.kick_direction();
+          const Eigen::Vector2d v = client::smpl::root_velocity(o).head<2>();
+          kicks.push_back({m.tick(), Eigen::Vector2d(-dir.y(), dir.x()).dot(v)});
+        },
+        [&](const SoccerMatch& m) {
+          const double speed = m.ball().velocity().head<2>().norm();
+          for (std::size_t k = first; k < kicks.size(); ++k)
+            if (m.tick() - kicks[k].start_tick <= 75)
+              kicks[k].top_speed = std::max(kicks[k].top_speed, speed);
+        });
   }
   int swaying_right = 0, struck = 0;
   for (const Kick& k : kicks) {
@@ -342,6 +361,30 @@ TEST(ScriptedSoccer, In2v2AMatchKickStartsSwayingTowardTheKickingFootAndStrikesT
   ASSERT_GE(kicks.size(), 8u);
   EXPECT_EQ(swaying_right, static_cast<int>(kicks.size()));
   EXPECT_GT(2 * struck, static_cast<int>(kicks.size())) << struck << " of " << kicks.size();
+}
+
+// Issue 30, 2v2 soccer (h-soccer4): traced on match tuning seeds 1-48, 2v2, most possessions
+// (138 of 337 lost to the other side) were lost with the ball 11-16 m from the goal the side
+// attacked, where it was still dribbled; the kick was started only within 11 m. The chaser now
+// kicks a ball within 13 m. 2v2 from the kick-off, the first 40 s of seeds 1 and 2 (tuning): a
+// kick starts with the ball more than 11 m from the goal its kicker attacks (today at 11.7 and
+// 12.2 m; main: none, it dribbles such a ball), and none from beyond 13 m.
+TEST(ScriptedSoccer, In2v2TheChaserKicksABallWithin13mOfTheGoal) {
+  std::vector<double> from;
+  for (std::uint64_t seed = 1; seed <= 2; ++seed)
+    play_2v2(seed, 40,
+             [&](const SoccerMatch& m, const client::ScriptedSoccerPolicy&, std::span<const float>,
+                 int s) {
+               const double goal_x =
+                   m.field().half_length() * m.referee().attack_direction(m.team_of(s));
+               const Eigen::Vector3d ball = m.ball().position();
+               from.push_back(std::hypot(goal_x - ball.x(), ball.y()));
+               std::printf("seed %llu, %.1f s: player %d kicks from %.1f m\n",
+                           static_cast<unsigned long long>(seed), m.tick() / 30.0, s, from.back());
+             });
+  ASSERT_FALSE(from.empty());
+  EXPECT_GE(std::count_if(from.begin(), from.end(), [](double d) { return d > 11.0; }), 1);
+  EXPECT_LE(*std::max_element(from.begin(), from.end()), 13.0);
 }
 
 }  // namespace
