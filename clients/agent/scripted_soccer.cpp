@@ -25,11 +25,14 @@ constexpr double kDownBelow_m = -0.4;  // a teammate's root this far below mine:
 // In a match the chaser kicks (the penalty's kick) a ball this near the goal it attacks, and
 // dribbles a ball further out (issue 30's third round, match seeds 1-12, 2v2: 9 m 4 goals, 11 m
 // 7, 13 m 8 with 2 own goals, 16 m 8 with 30% more falls than 11 m, everywhere 5 with twice the
-// falls). 13 m since h-soccer4: with the kick of the seventh round, traced on match tuning seeds
-// 1-48 (2v2), 138 of the 337 possessions lost to the other side were lost with the ball 11-16 m
-// from the goal, dribbled; kicking within 13 m: goals 62 -> 75, falls 281 -> 280 (15 m, the
-// seventh round, seeds 1-24: goals 36 -> 30, falls 129 -> 158).
-constexpr double kShootFrom_m = 13.0;
+// falls). In 2v2 13 m since h-soccer4: with the kick of the seventh round, traced on match
+// tuning seeds 1-48 (2v2), 138 of the 337 possessions lost to the other side were lost with the
+// ball 11-16 m from the goal, dribbled; kicking within 13 m: goals 62 -> 75, falls 281 -> 280
+// (15 m, the seventh round, seeds 1-24: goals 36 -> 30, falls 129 -> 158). Unseen seeds
+// 180001-180024 and 170025-170048: 2v2 goals 56 -> 69, falls 261 -> 248; in 1v1 (no guard in
+// front of the goal) goals 94 -> 126 but falls 172 -> 215, so 1v1 keeps 11 m.
+constexpr double kShootFrom_m = 11.0;
+constexpr double kShootFrom2v2_m = 13.0;
 // An opponent has the ball: I stay this far from the ball, and at least kKeepOffHolder_m from
 // the opponent. From 1.5 m (issue 30's third round) the ball changed sides 3.5 times a minute
 // in 2v2 (a push toward the holder's goal could bring the ball nearer the yielder, who then
@@ -341,7 +344,8 @@ void ScriptedSoccerPolicy::chase(std::span<const float> o, const View& v, std::s
     lined_up_ = along < 0.1 && off_line < kLoseLine_m;
   else
     lined_up_ = along < -0.2 && along > -kBehind_m - 0.4 && off_line < kLinedUp_m;
-  if ((v.goal - ball).norm() < kShootFrom_m) return kick_chase(o, v, a);
+  const double shoot_from = v.teammate ? kShootFrom2v2_m : kShootFrom_m;
+  if ((v.goal - ball).norm() < shoot_from) return kick_chase(o, v, a);
   if (lined_up_) return doing_ = "push", walk(o, ball + dir * kThrough_m, bearing(dir), a);
 
   doing_ = "approach";
