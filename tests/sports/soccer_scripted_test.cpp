@@ -365,8 +365,8 @@ TEST(ScriptedSoccer, In2v2AMatchKickStartsSwayingTowardTheKickingFootAndStrikesT
 
 // Issue 30, 2v2 soccer (h-soccer4): traced on match tuning seeds 1-48, 2v2, most possessions
 // (138 of 337 lost to the other side) were lost with the ball 11-16 m from the goal the side
-// attacked, where it was still dribbled; the kick was started only within 11 m. The chaser now
-// kicks a ball within 13 m. 2v2 from the kick-off, the first 40 s of seeds 1 and 2 (tuning): a
+// attacked, where it was still dribbled; the kick was started only within 11 m. In 2v2 the chaser
+// now kicks a ball within 13 m. 2v2 from the kick-off, the first 40 s of seeds 1 and 2 (tuning): a
 // kick starts with the ball more than 11 m from the goal its kicker attacks (today at 11.7 and
 // 12.2 m; main: none, it dribbles such a ball), and none from beyond 13 m.
 TEST(ScriptedSoccer, In2v2TheChaserKicksABallWithin13mOfTheGoal) {
