@@ -257,7 +257,8 @@ void ScriptedSoccerPolicy::kick_chase(std::span<const float> o, const View& v, s
   };
   const Eigen::Vector2d velocity = root_velocity(o).head<2>();
   const bool stepping = legs_ && legs_->stepping();
-  // (Penalties keep the kick as issue 30's fifth round chose it: not measured there.)
+  // The ball-side rule is the match's (a penalty's ball lies where the kick's start point puts it:
+  // not measured there); the start's sway gate is both's.
   const bool ball_on_kicking_side = penalty_ || left_of(dir).dot(ball) <= kMatchKickBallLeft_m;
   const bool ready = penalty_ ? at_penalty_kick_start(start, dir, stepping, root_velocity(o))
                               : at_match_kick_start(start, dir, stepping, velocity);
