@@ -48,14 +48,13 @@ constexpr double kKickFrom_m = 0.12;   // this close to where a kick starts: kic
 constexpr double kSettled_mps = 0.45;  // ...walking no faster than this
 constexpr double kAtRest_mps = 0.15;   // ...a ball this slow
 constexpr double kKickFacing = 0.4;    // ...facing the kick's line within this, rad
-// A penalty kick walking in starts only in the sway toward the kicking foot, as a match kick
-// (issue 30's penalty sway round, penalty tuning seeds 1-300): main started 74 of 300 kicks (no
-// keeper) in the other half; 4 of them scored and 73 kickers fell. Waiting for the sway at the
-// start point: no keeper 221 -> 288 goals, kickers down 107 -> 65; against the keeper 158 -> 192,
-// 137 -> 101. The penalty keeps its own window and pace (with the match's, 25 cm behind and 0.6
-// m/s: 263 and 164 goals, 162 and 201 down); a sway over 0.1 m/s: 285 and 192, 80 and 106.
+// A penalty kick walking in starts only in the sway toward the kicking foot (kKickSway_mps), as a
+// match kick (issue 30's penalty sway round, penalty tuning seeds 1-300): main started 74 of 300
+// kicks (no keeper) in the other half; 4 of them scored and 73 kickers fell. Waiting for the sway
+// at the start point: no keeper 221 -> 288 goals, kickers down 107 -> 65; against the keeper 158 ->
+// 192, 137 -> 101. The penalty keeps its own window and pace (with the match's, 25 cm behind and
+// 0.6 m/s: 263 and 164 goals, 162 and 201 down); a sway over 0.1 m/s: 285 and 192, 80 and 106.
 // Unseen seeds 180101-180500: scored 73.8% -> 94.2% and 50.8% -> 66.8% (docs/soccer.md).
-constexpr double kPenaltyKickSway_mps = 0.05;  // as a match kick's (kMatchKickSway_mps)
 // In a match a kick (the right foot's) starts only with the ball at most this far to the left
 // (the planting foot's side) of my root, across the kick's line: further left, the plant step
 // went onto or against the ball and the kicker went down before its swing (issue 30's kick,
@@ -64,8 +63,9 @@ constexpr double kPenaltyKickSway_mps = 0.05;  // as a match kick's (kMatchKickS
 // goals 15 -> 18, falls 273 -> 239. Walking the start point 4-6 cm left, or stepping to put the
 // ball right of the line, brought the early falls back (17-35 of 91-103 kicks).
 constexpr double kMatchKickBallLeft_m = 0.02;
-// In a match a kick starts only in the gait's sway toward the kicking (right) foot: the root
-// moving right across the kick's line faster than this. The kick's first phase shifts the weight
+// A kick (a match's since the seventh round, a penalty's walking in since the penalty sway round)
+// starts only in the gait's sway toward the kicking (right) foot: the root moving right across
+// the kick's line faster than kKickSway_mps. The kick's first phase shifts the weight
 // onto the kicking foot; started while the body swayed the other way it fought the sway, the
 // plant landed further behind the ball and the kicker fell (issue 30's kick, seventh round,
 // match tuning seeds 1-24, 2v2: of 112 kicks, 55 started swaying right: 33 sent the ball over 4
@@ -74,7 +74,7 @@ constexpr double kMatchKickBallLeft_m = 0.02;
 // start point (not only kKickFrom_m either way) at up to kMatchKickWalk_mps: with the sway
 // alone and the window as the penalty's, 95 kicks, goals 25 -> 19; with both, 72 kicks (60 over
 // 4 m/s), goals 25 -> 36 (7 own against 3), falls 161 -> 129.
-constexpr double kMatchKickSway_mps = 0.05;
+constexpr double kKickSway_mps = 0.05;
 constexpr double kMatchKickFromBehind_m = 0.25;
 constexpr double kMatchKickFromAhead_m = 0.05;
 constexpr double kMatchKickWalk_mps = 0.6;
@@ -103,6 +103,11 @@ constexpr double kKickLineLeft_rad = 5 * M_PI / 180;
 
 double bearing(const Eigen::Vector2d& v) { return std::atan2(v.y(), v.x()); }
 Eigen::Vector2d left_of(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
+// Whether the root's horizontal `velocity` sways toward the kicking (right) foot across the
+// kick's line `dir` (kKickSway_mps).
+bool swaying_toward_kicking_foot(const Eigen::Vector2d& dir, const Eigen::Vector2d& velocity) {
+  return left_of(dir).dot(velocity) < -kKickSway_mps;
+}
 
 }  // namespace
 
@@ -255,13 +260,13 @@ void ScriptedSoccerPolicy::kick_chase(std::span<const float> o, const View& v, s
     const double ahead = (at - com).head<2>().dot(dir);
     return at.z() < ground + 0.1 && ahead > -0.15 && ahead < 0.12;
   };
-  const Eigen::Vector2d velocity = root_velocity(o).head<2>();
+  const Eigen::Vector3d velocity = root_velocity(o);
   const bool stepping = legs_ && legs_->stepping();
   // The ball-side rule is the match's (a penalty's ball lies where the kick's start point puts it:
   // not measured there); the start's sway gate is both's.
   const bool ball_on_kicking_side = penalty_ || left_of(dir).dot(ball) <= kMatchKickBallLeft_m;
-  const bool ready = penalty_ ? at_penalty_kick_start(start, dir, stepping, root_velocity(o))
-                              : at_match_kick_start(start, dir, stepping, velocity);
+  const bool ready = penalty_ ? at_penalty_kick_start(start, dir, stepping, velocity)
+                              : at_match_kick_start(start, dir, stepping, velocity.head<2>());
   if (ready && under_body(kLAnkle) && under_body(kRAnkle) && rolling < kAtRest_mps &&
       std::abs(bearing(dir)) < kKickFacing && ball_on_kicking_side) {
     kick_->start(true);
@@ -287,8 +292,7 @@ bool ScriptedSoccerPolicy::at_penalty_kick_start(const Eigen::Vector2d& start,
   if (!stepping) return true;
   // Walking: slowly, and in the sway toward the kicking foot, as a match kick (its whole speed,
   // vertical part included, as the fifth round chose it; the sway across the kick's line).
-  return velocity.norm() < kSettled_mps &&
-         left_of(dir).dot(velocity.head<2>()) < -kPenaltyKickSway_mps;
+  return velocity.norm() < kSettled_mps && swaying_toward_kicking_foot(dir, velocity.head<2>());
 }
 
 bool ScriptedSoccerPolicy::at_match_kick_start(const Eigen::Vector2d& start,
@@ -298,7 +302,7 @@ bool ScriptedSoccerPolicy::at_match_kick_start(const Eigen::Vector2d& start,
   return behind < kMatchKickFromBehind_m && behind > -kMatchKickFromAhead_m &&
          std::abs(left_of(dir).dot(start)) < kKickFrom_m &&
          (!stepping || velocity.norm() < kMatchKickWalk_mps) &&
-         left_of(dir).dot(velocity) < -kMatchKickSway_mps;
+         swaying_toward_kicking_foot(dir, velocity);
 }
 
 Eigen::Vector2d ScriptedSoccerPolicy::shot_aim(const View& v) {

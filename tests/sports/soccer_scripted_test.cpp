@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <span>
 
 #include "core/control_rate.h"
 #include "policies.h"
@@ -299,6 +300,12 @@ TEST(ScriptedSoccer, In2v2AMatchKickerIsNotDownBeforeItsSwing) {
   EXPECT_LE(down_before_swing, 4) << "of " << kicks << " kicks";
 }
 
+// The root's speed across the line of the kick `player` starts now (left +), m/s.
+double sway_at_kick_start(const client::ScriptedSoccerPolicy& player, std::span<const float> o) {
+  const Eigen::Vector2d& dir = player.kick_direction();
+  return Eigen::Vector2d(-dir.y(), dir.x()).dot(client::smpl::root_velocity(o).head<2>());
+}
+
 // Issue 30, soccer kick, seventh round: a match kick started while the body swayed toward the
 // planting (left) foot fought its own first weight shift onto the kicking foot; most of those
 // kicks met air and the kicker fell (match tuning seeds 1-24, 2v2: 10 of 57 over 4 m/s, against
@@ -322,9 +329,7 @@ TEST(ScriptedSoccer, In2v2AMatchKickStartsSwayingTowardTheKickingFootAndStrikesT
         const bool kicking = players[s].kick().active();
         players[s].act(o[s], a[s]);
         if (kicking || !players[s].kick().active()) continue;
-        const Eigen::Vector2d& dir = players[s].kick_direction();
-        const Eigen::Vector2d v = client::smpl::root_velocity(o[s]).head<2>();
-        kicks.push_back({m->tick(), Eigen::Vector2d(-dir.y(), dir.x()).dot(v)});
+        kicks.push_back({m->tick(), sway_at_kick_start(players[s], o[s])});
       }
       m->step({a[0], a[1], a[2], a[3]});
       const double speed = soccer(m).ball().velocity().head<2>().norm();
@@ -364,9 +369,7 @@ TEST(ScriptedSoccer, APenaltyKickStartsSwayingTowardTheKickingFootAndScores) {
       kicker.act(o, a);
       if (!kicked && kicker.kick().active()) {
         kicked = true;
-        const Eigen::Vector2d& dir = kicker.kick_direction();
-        const Eigen::Vector3d v = client::smpl::root_velocity(o);
-        const double sway = Eigen::Vector2d(-dir.y(), dir.x()).dot(v.head<2>());
+        const double sway = sway_at_kick_start(kicker, o);
         ++kicks;
         swaying_right += sway < -0.05;
         std::printf("seed %llu: kick started at %.2f m/s across its line (left +)\n",
