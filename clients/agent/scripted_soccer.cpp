@@ -37,10 +37,10 @@ constexpr double kShootFrom_m = 11.0;
 constexpr double kKeepOffBall_m = 3.0;
 // In 2v2 (a teammate in view) further: 4.5 m. Traced (issue 30's takeover round, 2v2 match
 // tuning seeds 1-11): of 73 possessions lost to the other side, 70 were lost while the side's
-// last toucher was itself keeping off (65 for most of the time since its touch, 59 of those
-// touches pushes): its push left the ball nearer the opponent keeping off 3 m away, and the
-// opponent walked to it. At 4.5 m (tuning seeds 1-48): goals 62 (7 own) -> 76 (5 own), falls
-// 281 -> 253; at 6 m fewer goals (seeds 1-14: 27 -> 21). docs/soccer.md, the takeover round.
+// last toucher was keeping off, most of the time since its last touch: a push knocked the ball
+// (mostly sideways) nearer the opponent keeping off 3 m away than the pusher, who then kept off
+// while the opponent walked to it. Further off, fewer pushes end nearer the one keeping off
+// (tuning seeds 1-24: goals 35 (7 own goals) -> 37 (3), falls 138 -> 144; docs/soccer.md).
 constexpr double kKeepOffBall2v2_m = 4.5;
 constexpr double kKeepOffHolder_m = 1.5;
 // An opponent this near the middle of the goal I attack is in the way of a shot at the middle:
