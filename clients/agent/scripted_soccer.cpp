@@ -35,13 +35,6 @@ constexpr double kShootFrom_m = 11.0;
 // -> 116. With the aim below, on unseen match seeds 160001-160048: falls 411 -> 335 in 2v2 and
 // 389 -> 262 in 1v1 (resolved), goals 23 -> 20 and 55 -> 62 (not resolved); docs/soccer.md.
 constexpr double kKeepOffBall_m = 3.0;
-// In 2v2 (a teammate in view) further: 4.5 m. Traced (issue 30's takeover round, 2v2 match
-// tuning seeds 1-11): of 73 possessions lost to the other side, 70 were lost while the side's
-// last toucher was keeping off, most of the time since its last touch: a push knocked the ball
-// (mostly sideways) nearer the opponent keeping off 3 m away than the pusher, who then kept off
-// while the opponent walked to it. Further off, fewer pushes end nearer the one keeping off
-// (tuning seeds 1-24: goals 35 (7 own goals) -> 37 (3), falls 138 -> 144; docs/soccer.md).
-constexpr double kKeepOffBall2v2_m = 4.5;
 constexpr double kKeepOffHolder_m = 1.5;
 // An opponent this near the middle of the goal I attack is in the way of a shot at the middle:
 // I aim inside the post away from it. 3 m took the penalty keeper (0.5 m out); 6 m takes the 2v2
@@ -345,8 +338,7 @@ void ScriptedSoccerPolicy::chase(std::span<const float> o, const View& v, std::s
     // Beside its way to my goal, on my side of it: in its way, its pushes knock the ball into me.
     const Eigen::Vector2d back = (v.own_goal - ball).normalized();
     const double side = left_of(back).dot(-ball) >= 0 ? 1 : -1;
-    const double keep_off = v.teammate ? kKeepOffBall2v2_m : kKeepOffBall_m;
-    Eigen::Vector2d spot = ball + (back * 0.5 + left_of(back) * side * 0.87) * keep_off;
+    Eigen::Vector2d spot = ball + (back * 0.5 + left_of(back) * side * 0.87) * kKeepOffBall_m;
     if ((spot - *holder).norm() < kKeepOffHolder_m)
       spot = *holder + (spot - *holder).normalized() * kKeepOffHolder_m;
     return walk(o, spot, bearing(ball), a);

@@ -8,9 +8,9 @@
 //   ball at speed. It aims at the goal's middle, or with a keeper in the goal (or the 2v2 guard in
 //   front of it), inside the post away from it. In a match a ball within 11 m of the goal is kicked
 //   (SoccerKick), not dribbled, once it lies on the kicking foot's side of the kicker's line;
-// - in a match a player keeps off a ball an opponent is nearer (3 m, in 2v2 4.5 m; goal-side,
-//   beside the opponent's way to the goal): most falls came from players walking into each other,
-//   and from nearer, the holder's pushes gave the ball straight to the one keeping off;
+// - in a match a player keeps off a ball an opponent is nearer (3 m, goal-side, beside the
+//   opponent's way to the goal): most falls came from players walking into each other, and
+//   from nearer, the holder's pushes gave the ball straight to the one keeping off;
 // - the goalkeeper (penalty_kick_keeper, the side defending the near goal) stands on its line
 //   between the ball and the goal's middle, moves across to where a shot will cross the line
 //   and spreads its arms to block;
