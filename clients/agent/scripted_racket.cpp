@@ -80,9 +80,6 @@ struct Play {
   // swing starts once they stop. false: the joint-space swing from the first tick the ball is
   // within reach, its posture solved where the body stands (so it sweeps across as the body walks).
   bool swing_once_settled = false;
-  // ...where "still walk" means a stance further than this (m): the legs keep stepping the last
-  // few tens of cm to a stance, and a swing held back through them is drawn back too late.
-  double settled_within_m = 0;
   std::vector<double> arc_speeds;
   double arc_drive = 1;  // the arc is driven this much faster than planned (the arm lags)
   // Once the ball is within reach, the arc is swung in joint space (scripted_tennis_swing.h):
@@ -227,15 +224,6 @@ Play tennis_play() {
   // seeds 1-8, falls 23 in 20.5 min -> 7 in 21.0 min, points with a stroke 22.6% -> 19.0% (issue
   // 29, tennis falls in 1v1, second round; docs/racket-sports.md).
   p.swing_once_settled = true;
-  // Traced on ball-return tuning seeds 1-300 (issue 29, the swing-start round): with the swing
-  // held until the legs stop (0.5 s before contact), the arm, readied about 0.2 rad back, is still
-  // drawing back to the 1.2 rad backswing when the forward turn starts (0.25-0.3 s before), and
-  // the face came to the ball at a median 0.71 of the planned speed, 0.2-0.9 rad behind its turn;
-  // the legs had been within 0.1-0.3 m of the stance for 0.2 s and more. Counted as settled within
-  // 0.3 m, the swing starts 0.7-0.8 s before contact for those balls and the face comes at
-  // 0.75-1.35 of the plan (median about 1). Tuning seeds 1-300, returns in / touched / falls:
-  // 5 / 14 / 1 -> 7 / 15 / 1 (docs/racket-sports.md, the swing-start round).
-  p.settled_within_m = 0.3;
   return p;
 }
 
@@ -693,7 +681,7 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
   legs_->balance_centre_of_mass(sport_->model.centre_of_mass(pose), play.balance_ahead);
   legs_->act(o, court.to_heading_vector(walk).head<2>(), -court.yaw, a);
   if (!legs_->stepping()) control::hold_standing_legs(sport_->model, pose, a, play.gravity_scale);
-  drive_arm(court, pose, walk.norm() > std::max(1e-9, play.settled_within_m), a);
+  drive_arm(court, pose, walk.norm() > 1e-9, a);
 }
 
 }  // namespace olympics::client

@@ -69,8 +69,7 @@ class ScriptedRacketPolicy : public Policy {
   // by the stroke planner (control/serve_plan.h).
   bool plan_serve(std::span<const float> o, const control::CourtFrame& court,
                   const control::BodyPose& pose);
-  // `legs_walking`: this tick the legs were asked to walk further than Play::settled_within_m
-  // (Play::swing_once_settled).
+  // `legs_walking`: this tick the legs were asked to walk somewhere (Play::swing_once_settled).
   void drive_arm(const control::CourtFrame& court, const control::BodyPose& pose, bool legs_walking,
                  std::span<float> a);
   // How far from the racket shoulder a rally ball is met: the arm's share of its reach and the
