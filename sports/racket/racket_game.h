@@ -54,6 +54,9 @@ struct RacketGame {
   double toss_forward = 0, toss_side = 0, toss_z = 0, toss_speed = 0, serve_limit_s = 3;
   double toss_jitter = 0.03, toss_speed_jitter = 0.1;
   double service_line = 0, serve_y = 0;
+  // On the ad court (left of the centre mark) the server stands turned ad_serve_turn radians to
+  // its right (side-on, its left shoulder toward the net); the toss is placed from that stance.
+  double ad_serve_turn = 0;
 
   // Reward target on the opponent's half, from the hitter's view: |x| in [target_x_lo, hi],
   // |y| <= target_y.

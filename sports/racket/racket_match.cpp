@@ -159,8 +159,11 @@ core::RootPlacement RacketMatch::start_placement(int slot) const {
   double x = config_.game.player_x;
   if (config_.mode == RacketMode::Doubles)  // -side * y: its y as it faces the net, left +
     x -= config_.game.partner_forward(-side * y > 0);
-  // Facing the net: team 0 (at -x) looks along +x, team 1 along -x.
-  return {{side * x, y, 0}, side < 0 ? 0.0 : M_PI};
+  // Facing the net: team 0 (at -x) looks along +x, team 1 along -x; a server on the ad court (its
+  // left of the centre mark) turned to its right (clockwise seen from above) by the game's
+  // ad_serve_turn.
+  const double turn = slot == server_slot_ && -side * y > 0 ? config_.game.ad_serve_turn : 0.0;
+  return {{side * x, y, 0}, (side < 0 ? 0.0 : M_PI) - turn};
 }
 
 equipment::Pose RacketMatch::racket_pose(int slot) const {

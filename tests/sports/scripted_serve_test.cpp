@@ -120,6 +120,40 @@ TEST(ScriptedRacketServe, TennisServeIsPlannedForEveryToss) {
   EXPECT_EQ(planned, tosses);
 }
 
+// The ad court (left of the centre mark, every other point): facing the net, no serve was even
+// planned from there (the arm's arc about the shoulder sends the ball left; the box is to the
+// right), so half a served match's points began with a double fault. Turned side-on there (the
+// game's ad_serve_turn) the toss is beside the server: served 1v1 tuning seeds 1-8, ad-court
+// tosses in 0 -> 13 of 56. Here seeds 201-204, the first 8 ad-court tosses of each (facing the
+// net: 0 of 32).
+TEST(ScriptedRacketServe, TennisAdCourtServesLandIn) {
+  int ad_tosses = 0, ad_in = 0;
+  for (std::uint64_t seed = 201; seed <= 204; ++seed) {
+    ScriptedRacketPlay play("tennis", {"1v1", seed, 0.0, {{"start", "serve"}}});
+    const int court_y = play.layout.offset("court_position", "y");
+    int server = -1, seen = 0;
+    bool ad = false, asked = false;
+    while (!play.over() && seen < 8) {
+      const auto events = play.tick([&](int slot) {
+        // Its side of the centre mark, seen from its own half (left is +y), the tick after the
+        // toss.
+        if (asked && slot == server) ad = play.obs[slot][court_y] > 0, asked = false;
+      });
+      for (const auto& ev : events) {
+        const std::string call = ev.value("call", "");
+        if (call == "toss") server = ev.value("slot", -1), asked = true;
+        if (server < 0 || !(call == "serve_in" || call == "fault" || call == "let")) continue;
+        if (ad) ++seen, ad_in += call == "serve_in";
+        server = -1;
+      }
+    }
+    ad_tosses += seen;
+  }
+  std::printf("tennis 1v1 ad-court tosses: %d in of %d\n", ad_in, ad_tosses);
+  EXPECT_EQ(ad_tosses, 32);
+  EXPECT_GE(ad_in, 2);
+}
+
 // A table-tennis match to 5 with serves, scripted: it ends by score, with rallies past the serve
 // (in 2v2 the four take the serve in turn, A1, B1, A2, B2).
 void plays_points_with_serves(const std::string& mode) {
