@@ -54,6 +54,8 @@ struct Play {
   double commit_s = 0.2;           // this close to the ball, the stroke is no longer re-planned
   double settle_s = 0.5;           // the legs stop walking this long before a reachable ball
   double doubles_step_back = 0.7;  // m further back than home while the partner plays
+  // After its stroke the player stands this long (s) before it walks home.
+  double home_after_s = 0.4;
   // Table-tennis doubles serve: the face and its swing turned this much further across (left,
   // radians) than planned. Swung across the body toward the diagonal, the arm sends the ball about
   // 11 degrees right of the planned line (tuning seeds 1-4: 25.5 degrees asked, 14.7 delivered).
@@ -117,6 +119,14 @@ Play table_play() {
   // feeds. Waiting 1.8 m back: 1v1 tuning seeds 1-20, strokes per point 1.18 -> 1.51, points
   // with 4 or more 31 -> 85, falls 7 -> 2 (issue 29, the rally round; docs/racket-sports.md).
   p.home_x = -1.8;
+  // ...and it walks there 0.6 s after its stroke, not 0.4 (issue 29, the recovery round). A
+  // probe of 1v1 tuning seeds 1-4 found a player back from its stroke still 0.5 m nearer the
+  // table than home, and hardly moving, when the opponent struck (0.9 s after its own stroke), so
+  // walking sooner was tried first: at 0 / 0.2 s, seeds 1-20, strokes per point 1.51 -> 1.38 /
+  // 1.40, falls 2 -> 8 / 8. Later paid: at 0.6 s, seeds 21-40, 1.54 -> 1.97, points of 4 or
+  // more strokes 87 -> 163, falls 2 -> 6; unseen seeds 195001-195040, 1.49 -> 1.88, 4 or more
+  // 9.9% -> 18.7%, falls 0.16 -> 0.06 a minute (docs/racket-sports.md; why, not traced).
+  p.home_after_s = 0.6;
   p.aim = {0.6, 0};
   p.net_margin = 0.08;
   p.trunk_reach = 0.12;
@@ -667,7 +677,7 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
     if (!stroke_->reachable && play.chase_slack > 0 &&
         walk.norm() > play.walk_speed * std::max(0.0, stroke_->time_to_hit) + play.chase_slack)
       walk.setZero();
-  } else if (!coming && since_stroke_s_ > 0.4) {
+  } else if (!coming && since_stroke_s_ > play.home_after_s) {
     // Home: the middle of the own half's back, or in doubles the own side of it.
     const double home_y =
         doubles_ ? (court.root.y() >= partner.y() ? 1 : -1) * sport_->game.partner_y : 0;

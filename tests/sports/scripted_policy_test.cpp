@@ -316,6 +316,9 @@ TEST(ScriptedRacketPolicy, WaitsNearerTheTableEndBetweenBalls) {
   std::printf("%d rally balls, the receiver at a mean x %.3f\n", rally_balls, mean_x);
   EXPECT_GE(rally_balls, 50) << "waiting 2 m back: 40";
   EXPECT_GT(mean_x, -1.44) << "waiting 2 m back: -1.478";
+  // ...and, standing 0.6 s after its own stroke before it walks home (Play::home_after_s; issue
+  // 29, the recovery round), nearer still: -1.348.
+  EXPECT_GT(mean_x, -1.38) << "walking home 0.4 s after the stroke: -1.407";
 }
 
 }  // namespace
