@@ -18,13 +18,21 @@ using namespace smpl;
 // steps while it punches falls: the stepping controller never stands still next to a moving
 // opponent, and an arm thrown from a foot in the air tips it over (about 8 falls a minute). So
 // the boxer walks into range, plants both feet, and punches only while planted.
-constexpr double kRange_m = 0.85;         // root to root while punching
-constexpr double kInRange_m = 1.1;        // punches start this close
-constexpr double kMaxSpeed = 0.3;         // m/s of the approach (faster carries it into the other)
-constexpr double kGapShare = 0.5;         // each boxer closes half the gap: both move
-constexpr double kPlantWithin_m = 0.15;   // plants when this near its range...
-constexpr double kPlantFacing = 0.25;     // ...facing the opponent within this (rad)...
-constexpr double kPlantSpeed = 0.3;       // ...and moving slower than this (m/s)
+constexpr double kRange_m = 0.85;        // root to root while punching
+constexpr double kInRange_m = 1.1;       // punches start this close
+constexpr double kMaxSpeed = 0.3;        // m/s of the approach (faster carries it into the other)
+constexpr double kGapShare = 0.5;        // each boxer closes half the gap: both move
+constexpr double kPlantWithin_m = 0.15;  // plants when this near its range...
+constexpr double kPlantFacing = 0.25;    // ...facing the opponent within this (rad)...
+constexpr double kPlantSpeed = 0.3;      // ...and moving slower than this (m/s)
+// ...and not moving back with the centre of mass at the heels. The plant's ankles hold the centre
+// of mass over the middle of the ankles, 6 cm in front of the heels' edge, and cannot stop a body
+// already moving back: a boxer planted backing off at 0.2-0.3 m/s tipped over backward within a
+// second, no one touching it (traced on seeds 1-80: 12 of main's 50 falls). So it plants only
+// when its capture point (the centre of mass plus its velocity times sqrt(height / g), where it
+// would come to rest) is no more than 2 cm behind the ankles and it backs off slower than 5 cm/s.
+constexpr double kPlantCaptureBehind_m = 0.02;
+constexpr double kPlantBackSpeed = 0.05;
 constexpr double kReplantBeyond_m = 0.3;  // planted, it steps again when this far off its range
 constexpr double kReplantFacing = 0.6;    // or the opponent this far to the side (rad)
 // ...or it moves faster than this (m/s): pushed, a planted boxer steps at once to catch itself
@@ -75,6 +83,18 @@ void punch(std::span<const float> o, std::span<float> a, Arm arm, const Eigen::V
 bool feet_down(std::span<const float> o) {
   const double floor = -root_height(o);
   return body_position(o, kLAnkle).z() < floor + 0.1 && body_position(o, kRAnkle).z() < floor + 0.1;
+}
+
+// Would both feet planted where they stand hold this body? It is not moving back (`towards`: the
+// opponent's direction) and its capture point (`com`: the centre of mass, heading frame from the
+// root) is not behind the ankles.
+bool plant_would_hold(std::span<const float> o, const Eigen::Vector3d& com,
+                      const Eigen::Vector2d& towards) {
+  const Eigen::Vector3d v = root_velocity(o);
+  const double ankles_x = 0.5 * (body_position(o, kLAnkle).x() + body_position(o, kRAnkle).x());
+  const double capture_x = com.x() + v.x() * std::sqrt(root_height(o) / 9.81);
+  return capture_x - ankles_x > -kPlantCaptureBehind_m &&
+         v.head<2>().dot(towards) > -kPlantBackSpeed;
 }
 
 // Both feet planted where they stand, knees bent, each leg's hip drive holding the pelvis upright
@@ -154,6 +174,7 @@ void ScriptedBoxingPolicy::act(std::span<const float> o, std::span<float> a) {
     legs_.emplace(gains_, control_dt_);
     was_resting_ = resting;
   }
+  const Eigen::Vector3d com = smpl_model().centre_of_mass(smpl_model().pose_from_observation(o));
   if (resting) {
   } else if (planted_) {
     if (std::abs(off) > kReplantBeyond_m || std::abs(bearing) > kReplantFacing ||
@@ -162,10 +183,9 @@ void ScriptedBoxingPolicy::act(std::span<const float> o, std::span<float> a) {
       legs_.emplace(gains_, control_dt_);  // a fresh step from both feet down
     }
   } else if (std::abs(off) < kPlantWithin_m && std::abs(bearing) < kPlantFacing && feet_down(o) &&
-             root_velocity(o).head<2>().norm() < kPlantSpeed) {
+             root_velocity(o).head<2>().norm() < kPlantSpeed && plant_would_hold(o, com, towards)) {
     planted_ = true;
   }
-  const Eigen::Vector3d com = smpl_model().centre_of_mass(smpl_model().pose_from_observation(o));
   // Stepping, it stands balancing its centre of mass (not its root) and steps to catch itself
   // when that moves off the feet or the body moves fast (StepGains::recover_m, recover_speed).
   if (planted_) {

@@ -3,7 +3,8 @@
 //
 // - it faces the opponent and walks (StepController) to punching range, each boxer closing half
 //   the gap; there it plants both feet, knees bent, and balances its centre of mass over them
-//   with the ankles; it steps again only when the distance or the opponent's bearing drifts;
+//   with the ankles (never while backing off: planted, it would tip over backward); it steps
+//   again only when the distance or the opponent's bearing drifts;
 // - it holds a guard: upper arms forward and down, elbows bent, gloves up before the chin;
 // - planted and in range it punches (never from a step): left jab and right cross in turn, each arm
 //   thrown straight at the opponent's chest, under its guard, with the trunk leaning into the
@@ -29,6 +30,8 @@ class ScriptedBoxingPolicy : public Policy {
  public:
   void start(const MatchInfo& match) override;
   void act(std::span<const float> observation, std::span<float> action) override;
+  // Both feet planted where they stand (punching when in range), as of the last act().
+  bool planted() const { return planted_; }
 
  private:
   struct Blocks {  // where the observation's fields it reads start
