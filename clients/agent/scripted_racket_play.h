@@ -1,0 +1,97 @@
+// How the scripted racket player plays each sport: the settings ScriptedRacketPolicy
+// (scripted_racket.cpp) reads, one set per sport, each chosen on ball-return or match tuning seeds
+// with its figures beside it (docs/racket-sports.md).
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "step_controller.h"
+
+namespace olympics::client::racket_play {
+
+// How a sport is played: where the racket arm meets the ball best, where strokes go, how they
+// are shaped. Table tennis meets the ball close and gently, tennis further out and harder.
+// Chosen on ball-return tuning seeds 1-200 (docs/racket-sports.md); never on the benchmark's.
+struct Play {
+  Eigen::Vector3d sweet_spot;  // face centre at contact, heading frame from the root
+  // Where the face meets a rally's ball (the planner's choice of contact and where the legs put
+  // the body) when not the sweet spot: at the table, nearer the body's line (the sweet spot keeps
+  // the ready point and the serve).
+  std::optional<Eigen::Vector3d> meet_spot;
+  double below = 0.5, above = 0.45;  // heights about the sweet spot the arm meets balls at, m
+  double home_x = 0;                 // court x the player returns to between balls
+  Eigen::Vector2d aim;               // where strokes should land (court frame, far half)
+  double net_margin = 0;             // m above the net
+  double reach_fraction = 0.9;       // of the arm's full reach
+  // How much further the trunk's lean and turn take the shoulder; 0: the arm alone reaches (a
+  // heavy racket swung from a leaning trunk topples the player).
+  double trunk_reach = 0;
+  double table_clearance = 0.12;  // a ball met over the table is at least this far above it
+  double max_back = 0;            // backswing, m along the swing's line
+  double swing_s = 0.25;          // the swing from the backswing to the ball
+  double follow = 0;              // follow-through, m
+  double max_speed = 0;           // face speed, m/s
+  // The straight backswing is drawn over this long, ending as the swing starts; until then the
+  // face waits at the ready point. 0: it is held at the back point from the stroke's planning.
+  double draw_s = 0;
+  // The arm is asked for where the face should be this long after the tick starts (measured:
+  // asking for the tick's end, or later, meets fewer balls).
+  double ask_ahead_s = 0.02;
+  // Gravity compensation, in multiples of the weight (control/drive_target.h: 3 holds a still
+  // arm; a swinging one met more balls with less).
+  double gravity_scale = 2;
+  double commit_s = 0.2;           // this close to the ball, the stroke is no longer re-planned
+  double settle_s = 0.5;           // the legs stop walking this long before a reachable ball
+  double doubles_step_back = 0.7;  // m further back than home while the partner plays
+  // After its stroke the player stands this long (s) before it walks home.
+  double home_after_s = 0.4;
+  // Table-tennis doubles serve: the face and its swing turned this much further across (left,
+  // radians) than planned. Swung across the body toward the diagonal, the arm sends the ball about
+  // 11 degrees right of the planned line (tuning seeds 1-4: 25.5 degrees asked, 14.7 delivered).
+  double doubles_serve_turn = 0;
+  double walk_speed = 0.6;       // m/s the legs cover, roughly, toward a ball out of reach
+  double balance_ahead = -0.03;  // the centre of mass held this far ahead of the ankles
+  double horizon_s = 0;          // how far ahead the ball is predicted
+  // The legs walk to a ball out of reach only while they can still get there in time: its
+  // stance no further than walk_speed × the time left plus this (the arm meets balls that far
+  // short of the stance); beyond, they stand. 0: they always walk.
+  double chase_slack = 0;
+  // A ball swung at and missed (its committed contact passed while it still comes) is let go:
+  // the legs stand until the ball is dead or struck, rather than chase it along its path behind
+  // the player. false: the planner picks a later point on the path and the legs walk there.
+  bool let_go_missed = false;
+  // The swing as an arc about the vertical through the shoulder (the arm turning as one, the
+  // face at a constant distance), at the least of `arc_speeds` that returns the ball in.
+  double max_back_angle = 0;  // radians of backswing along the arc; 0: a straight swing
+  double follow_angle = 0.5;  // radians of follow-through
+  // ...and while the legs still walk to the ball (a racket held far back topples the walker).
+  double walking_back_angle = 0.4;
+  // While the legs still walk to a ball within reach, the arm readies the arc as seen from where
+  // they are taking the body, drawn back no further than `walking_back_angle`; the joint-space
+  // swing starts once they stop. false: the joint-space swing from the first tick the ball is
+  // within reach, its posture solved where the body stands (so it sweeps across as the body walks).
+  bool swing_once_settled = false;
+  std::vector<double> arc_speeds;
+  double arc_drive = 1;  // the arc is driven this much faster than planned (the arm lags)
+  // Once the ball is within reach, the arc is swung in joint space (scripted_tennis_swing.h):
+  // the arm held in the posture that meets the ball, turned about the shoulder's vertical from
+  // rest at the backswing, asked `swing_lead_s` ahead of the face's planned timing.
+  bool joint_swing = false;
+  double swing_lead_s = 0;
+  // The serve swung on the arc in joint space (control::plan_arc_serve) at the least of these
+  // face speeds (m/s) that lands in the box; empty: the straight swing toward the box. Its
+  // face normal is planned, then tilted down (about the horizontal across it) and turned right
+  // by these (radians), for the arm's error at that speed; the free arm swings the other way.
+  std::vector<double> serve_speeds;
+  double serve_tilt_down = 0, serve_turn_right = 0;
+  // The serve meets the toss within this share of the arm's full reach (the rally's is
+  // `reach_fraction`); 0: the rally's.
+  double serve_reach_fraction = 0;
+  StepGains legs;
+};
+
+Play table_play();
+Play tennis_play();
+
+}  // namespace olympics::client::racket_play
