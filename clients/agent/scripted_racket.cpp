@@ -339,9 +339,7 @@ bool ScriptedRacketPolicy::plan_serve(std::span<const float> o, const CourtFrame
   stroke_.reset();
   const std::vector<BallSample> toss = sport_->path.predict(ball, velocity, 2.0);
   const Eigen::Vector3d shoulder = court.point(pose.position[kRShoulder]);
-  const double reach =
-      (play.serve_reach_fraction > 0 ? play.serve_reach_fraction : play.reach_fraction) *
-      sport_->arm_reach;
+  const double reach = play.serve_reach_fraction.value_or(play.reach_fraction) * sport_->arm_reach;
   const control::ServeAim aim = control::serve_aim(sport_->game, court.root);
   std::optional<Eigen::Vector3d> pivot;
   std::optional<control::ServePlan> serve;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <vector>
 
 #include "step_controller.h"
@@ -85,9 +86,9 @@ struct Play {
   // by these (radians), for the arm's error at that speed; the free arm swings the other way.
   std::vector<double> serve_speeds;
   double serve_tilt_down = 0, serve_turn_right = 0;
-  // The serve meets the toss within this share of the arm's full reach (the rally's is
-  // `reach_fraction`); 0: the rally's.
-  double serve_reach_fraction = 0;
+  // The serve meets the toss within this share of the arm's full reach; unset: the rally's
+  // `reach_fraction`.
+  std::optional<double> serve_reach_fraction;
   StepGains legs;
 };
 

@@ -156,13 +156,13 @@ core::RootPlacement RacketMatch::start_placement(int slot) const {
     else if (!config_.game.on_table)
       y = away * config_.game.serve_y;
   }
+  const bool on_own_left = -side * y > 0;  // its y as it faces the net, left +
   double x = config_.game.player_x;
-  if (config_.mode == RacketMode::Doubles)  // -side * y: its y as it faces the net, left +
-    x -= config_.game.partner_forward(-side * y > 0);
+  if (config_.mode == RacketMode::Doubles) x -= config_.game.partner_forward(on_own_left);
   // Facing the net: team 0 (at -x) looks along +x, team 1 along -x; a server on the ad court (its
   // left of the centre mark) turned to its right (clockwise seen from above) by the game's
   // ad_serve_turn.
-  const double turn = slot == server_slot_ && -side * y > 0 ? config_.game.ad_serve_turn : 0.0;
+  const double turn = slot == server_slot_ && on_own_left ? config_.game.ad_serve_turn : 0.0;
   return {{side * x, y, 0}, (side < 0 ? 0.0 : M_PI) - turn};
 }
 
