@@ -1,6 +1,7 @@
 """smpl_olympics.evaluate against real servers: it picks the snapshot that plays best on the
-validation seeds (not the latest, not the first), measures it on other held-out seeds beside
-the scripted player, and a rerun gives the very same tables."""
+validation seeds (not the latest, not the first), measures it on other held-out seeds (one range
+or several) beside the scripted player and against it match by match, and a rerun gives the very
+same tables."""
 import json
 import os
 import shutil
@@ -42,7 +43,7 @@ class Evaluate(unittest.TestCase):
 
     def evaluate(self, run):
         done = subprocess.run([sys.executable, "-m", "smpl_olympics.evaluate", run,
-                               "--validation-seeds", "1-12", "--test-seeds", "101-112",
+                               "--validation-seeds", "1-12", "--test-seeds", "101-106,201-206",
                                "--num-envs", "6"], capture_output=True, text=True, cwd=HERE,
                               timeout=600)
         self.assertEqual(done.returncode, 0, done.stdout[-3000:] + done.stderr[-3000:])
@@ -70,7 +71,19 @@ class Evaluate(unittest.TestCase):
         self.assertEqual(set(test), {"scripted", "best: v00002", "latest: v00003"})
         # The chosen snapshot is the scripted player plus zero: the same matches, the same score.
         self.assertEqual(test["best: v00002"], test["scripted"])
-        self.assertEqual(test["best: v00002"]["matches"], 12)
+        self.assertEqual(test["best: v00002"]["matches"], 12)  # both ranges
+        self.assertEqual(first["test_seeds"], [[101, 106], [201, 206]])
+        # Match by match against the scripted player: the chosen one (scripted plus zero) differs
+        # in none; the latest (zero alone, no ball returned) scores less wherever it scored.
+        paired = first["test_against_scripted"]
+        self.assertEqual(set(paired), {"best: v00002", "latest: v00003"})
+        self.assertEqual((paired["best: v00002"]["mean"], paired["best: v00002"]["better"],
+                          paired["best: v00002"]["worse"]), (0.0, 0, 0))
+        latest = paired["latest: v00003"]
+        self.assertAlmostEqual(latest["mean"], -test["scripted"]["score_mean"])
+        self.assertGreater(latest["worse"], 0)
+        self.assertEqual(latest["better"], 0)
+        self.assertLess(latest["mean_95"][1], 0, "returning no ball is not within noise here")
         self.assertEqual(self.evaluate(run), first, "a rerun gave other tables")
         with open(os.path.join(run, "evaluation.md")) as f:
             self.assertIn("| best: v00002 | 12 |", f.read())
@@ -92,12 +105,29 @@ class Evaluate(unittest.TestCase):
         self.assertAlmostEqual(balls["score_mean_95"][0], 1 - half)
         self.assertAlmostEqual(balls["score_mean_95"][1], 1 + half)
 
+    def test_the_paired_difference_is_the_mean_of_the_per_seed_differences(self):
+        from smpl_olympics.evaluate import paired_difference
+        scripted = [{"seed": s, "scores": [v]} for s, v in ((1, 1), (2, 0), (3, 2), (4, 1))]
+        snapshot = [{"seed": s, "scores": [v]} for s, v in ((3, 2), (1, 2), (4, 0), (2, 1))]
+        d = paired_difference(snapshot, scripted)  # per seed: +1, +1, 0, -1 (any order)
+        diffs = [1, 1, 0, -1]
+        error = np.std(diffs, ddof=1) / 2
+        self.assertAlmostEqual(d["mean"], 0.25)
+        self.assertAlmostEqual(d["mean_95"][0], 0.25 - 1.96 * error)
+        self.assertAlmostEqual(d["z"], 0.25 / error)
+        self.assertEqual((d["matches"], d["better"], d["worse"]), (4, 2, 1))
+
     def test_overlapping_seeds_are_refused(self):
         done = subprocess.run([sys.executable, "-m", "smpl_olympics.evaluate", self.make_run(),
                                "--validation-seeds", "1-20", "--test-seeds", "10-30"],
                               capture_output=True, text=True, cwd=HERE)
         self.assertNotEqual(done.returncode, 0)
         self.assertIn("overlap", done.stderr)
+        within = subprocess.run([sys.executable, "-m", "smpl_olympics.evaluate", self.make_run(),
+                                 "--test-seeds", "1001-1020,1010-1030"],
+                                capture_output=True, text=True, cwd=HERE)
+        self.assertNotEqual(within.returncode, 0)
+        self.assertIn("the ranges overlap", within.stderr)
 
 
 if __name__ == "__main__":

@@ -1,13 +1,15 @@
 """Pick a run's best snapshot on held-out seeds, then measure it on other held-out seeds.
 
-    python3 -m smpl_olympics.evaluate runs/tt --validation-seeds 1-200 --test-seeds 1001-2000
+    python3 -m smpl_olympics.evaluate runs/tt --validation-seeds 1-200 --test-seeds 1001-2000,5001-5200
 
 Every snapshot of the run (snapshots/policy-vNNNNN.safetensors) plays the validation seeds with
 its mean action, as olympics-agent plays it (a residual snapshot on top of the scripted player);
 the best by the mode's figure (ball return and other one-team modes: the score, e.g. balls
 returned in; matches: the win rate, then the score) is copied to policy-best.safetensors and then
 plays the test seeds beside the scripted player, which neither training (its seeds start at
-10^6) nor the choice saw. The latest snapshot is not the best as a rule: returns in swing by a
+10^6) nor the choice saw. Each player on the test seeds is also compared with the scripted player
+match by match (the same seeds: a paired difference, its 95% interval and z), which tells a small
+gain from noise where the two players' own intervals overlap. The latest snapshot is not the best as a rule: returns in swing by a
 factor of five between snapshots 100 iterations apart (docs/training.md).
 
 Deterministic: a match is its seed and the actions, and every player here acts from its
@@ -44,20 +46,37 @@ def seed_range(text):
     return range(first, last + 1)
 
 
+def seed_ranges(text):
+    """"A-B,C-D" -> [range(A, B + 1), range(C, D + 1)]: one or more ranges, none overlapping."""
+    ranges = [seed_range(part) for part in text.split(",")]
+    seen = set()
+    for r in ranges:
+        if seen & set(r):
+            raise argparse.ArgumentTypeError(f"seeds {text!r}: the ranges overlap")
+        seen |= set(r)
+    return ranges
+
+
+def seeds_label(ranges):
+    return ", ".join(f"{r.start}-{r.stop - 1}" for r in ranges)
+
+
 def parse_args(argv=None):
     p = argparse.ArgumentParser(prog="python3 -m smpl_olympics.evaluate", description=__doc__,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("run", help="the run folder (its args.json and snapshots/)")
-    p.add_argument("--validation-seeds", type=seed_range, default=seed_range("1-200"),
-                   help="seeds that choose the snapshot (default 1-200)")
-    p.add_argument("--test-seeds", type=seed_range, default=seed_range("1001-2000"),
-                   help="seeds that measure the chosen one (default 1001-2000)")
+    p.add_argument("--validation-seeds", type=seed_ranges, default=seed_ranges("1-200"),
+                   help="seeds that choose the snapshot (default 1-200; ranges: 1-200,501-600)")
+    p.add_argument("--test-seeds", type=seed_ranges, default=seed_ranges("1001-2000"),
+                   help="seeds that measure the chosen one (default 1001-2000; ranges as above)")
     p.add_argument("--num-envs", type=int, default=16, help="matches played at once")
     p.add_argument("--lcm-url", default="", help="a server's LCM URL (default: a private one)")
     args = p.parse_args(argv)
-    if set(args.validation_seeds) & set(args.test_seeds):
+    validation = {s for r in args.validation_seeds for s in r}
+    test = {s for r in args.test_seeds for s in r}
+    if validation & test:
         p.error("the validation and test seeds overlap: the test would see the choice's seeds")
-    if min(args.validation_seeds.start, args.test_seeds.start) >= 10**6:
+    if max(validation | test) >= 10**6:
         p.error("seeds from 10^6 up are the trainer's: pick held-out ones below")
     return args
 
@@ -84,7 +103,13 @@ class Match:
                             self.spec["action_size"], float(self.spec["control_hz"]), seed)
 
 
-def play(match, player, seeds, num_envs, lcm_url):
+def play(match, player, ranges, num_envs, lcm_url):
+    """The results of `player` (team 0) against the opponent on every seed of these ranges, in
+    their order."""
+    return [r for seeds in ranges for r in play_range(match, player, seeds, num_envs, lcm_url)]
+
+
+def play_range(match, player, seeds, num_envs, lcm_url):
     """The results of `player` (team 0) against the opponent on exactly these seeds. Without
     lcm_url, on a private server of this call's own: the matches begun past the last seed end
     with it (on a patient server they would hold its room for minutes)."""
@@ -153,6 +178,29 @@ def summary(results, match):
     return out
 
 
+def paired_difference(results, baseline):
+    """The learning team's score minus the baseline's, match by match on the same seeds: the mean
+    difference with 1.96 standard errors, z (mean over its standard error) and how many matches
+    scored more or less. Pairing removes what the seed decides for both players alike."""
+    base = {r["seed"]: r["scores"][0] for r in baseline}
+    diffs = np.array([r["scores"][0] - base[r["seed"]] for r in results], dtype=float)
+    mean = float(np.mean(diffs))
+    error = float(np.std(diffs, ddof=1)) / np.sqrt(len(diffs)) if len(diffs) > 1 else 0.0
+    return {"matches": len(diffs), "mean": mean,
+            "mean_95": [mean - 1.96 * error, mean + 1.96 * error],
+            "z": mean / error if error > 0 else 0.0,
+            "better": int(np.sum(diffs > 0)), "worse": int(np.sum(diffs < 0))}
+
+
+def paired_table(rows):
+    lines = ["| player | matches | score minus the scripted player's, per match (95% interval) | z "
+             "| matches better | matches worse |", "|---|---|---|---|---|---|"]
+    for name, d in rows:
+        lines.append(f"| {name} | {d['matches']} | {d['mean']:+.3f} ({d['mean_95'][0]:+.3f} to "
+                     f"{d['mean_95'][1]:+.3f}) | {d['z']:.1f} | {d['better']} | {d['worse']} |")
+    return "\n".join(lines)
+
+
 def rate(value, interval):
     return f"{100 * value:.1f}% ({100 * interval[0]:.1f}-{100 * interval[1]:.1f}%)"
 
@@ -187,7 +235,7 @@ def main(argv=None):
         sys.exit(f"no snapshots/policy-vNNNNN.safetensors in {args.run}: train first")
     val = args.validation_seeds
     print(f"{match.sport} {match.mode}: {len(snapshots)} snapshots on validation seeds "
-          f"{val.start}-{val.stop - 1}" + (f", against {match.opponent}" if match.others else ""))
+          f"{seeds_label(val)}" + (f", against {match.opponent}" if match.others else ""))
     chosen = {}
     for version, path in snapshots:
         chosen[version] = summary(play(match, f"mlp:{path}", val, args.num_envs, args.lcm_url),
@@ -197,25 +245,28 @@ def main(argv=None):
     best_path = os.path.join(folder, "policy-best.safetensors")
     shutil.copyfile(dict(snapshots)[best], best_path)
     test = args.test_seeds
-    measured = [("scripted", summary(play(match, "scripted", test, args.num_envs, args.lcm_url),
-                                     match)),
-                (f"best: v{best:05d}", summary(play(match, f"mlp:{best_path}", test,
-                                                    args.num_envs, args.lcm_url), match))]
+    players = [("scripted", "scripted"), (f"best: v{best:05d}", f"mlp:{best_path}")]
     latest = snapshots[-1][0]
     if latest != best:
-        measured.append((f"latest: v{latest:05d}", summary(
-            play(match, f"mlp:{snapshots[-1][1]}", test, args.num_envs, args.lcm_url), match)))
-    report = (f"Validation seeds {val.start}-{val.stop - 1} (choose the snapshot):\n\n" +
+        players.append((f"latest: v{latest:05d}", f"mlp:{snapshots[-1][1]}"))
+    results = {name: play(match, player, test, args.num_envs, args.lcm_url)
+               for name, player in players}
+    measured = [(name, summary(results[name], match)) for name, _ in players]
+    paired = [(name, paired_difference(results[name], results["scripted"]))
+              for name, _ in players[1:]]
+    report = (f"Validation seeds {seeds_label(val)} (choose the snapshot):\n\n" +
               table([(f"v{v:05d}", s) for v, s in chosen.items()], match) +
-              f"\n\nTest seeds {test.start}-{test.stop - 1} (measure it):\n\n" +
-              table(measured, match) + "\n")
+              f"\n\nTest seeds {seeds_label(test)} (measure it):\n\n" +
+              table(measured, match) +
+              "\n\nAgainst the scripted player on the same test seeds (paired):\n\n" +
+              paired_table(paired) + "\n")
     with open(os.path.join(args.run, "evaluation.md"), "w") as f:
         f.write(report)
     with open(os.path.join(args.run, "evaluation.json"), "w") as f:
-        json.dump({"validation_seeds": [val.start, val.stop - 1],
-                   "test_seeds": [test.start, test.stop - 1], "best": best,
+        json.dump({"validation_seeds": [[r.start, r.stop - 1] for r in val],
+                   "test_seeds": [[r.start, r.stop - 1] for r in test], "best": best,
                    "validation": {f"v{v:05d}": s for v, s in chosen.items()},
-                   "test": dict(measured)}, f, indent=1)
+                   "test": dict(measured), "test_against_scripted": dict(paired)}, f, indent=1)
     print("\n" + report + f"\nchosen: {best_path}")
 
 
