@@ -205,20 +205,6 @@ void ScriptedRacketPolicy::plan(std::span<const float> o, const CourtFrame& cour
   }
 }
 
-bool ScriptedRacketPolicy::legs_walking(const Eigen::Vector3d& walk) {
-  const Play& play = sport_->play;
-  const bool rally_in_reach = stroke_ && stroke_->reachable && !stroke_->serve;
-  if (!rally_in_reach) swing_released_ = false;
-  if (walk.norm() <= 1e-9) return false;
-  // Nearly there and nearly still: the legs step the last few cm to the stance, and a swing held
-  // back through them is drawn back too late (the swing-start round); released only while the
-  // body is slow, as one released while it still moves fell in 1v1 (2d3e685).
-  const double speed = Eigen::Vector2d(root_velocity_.x(), root_velocity_.y()).norm();
-  if (rally_in_reach && walk.norm() <= play.settled_within_m && speed < play.settled_below_speed)
-    swing_released_ = true;
-  return !swing_released_;
-}
-
 void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& pose,
                                      bool legs_walking, std::span<float> a) {
   const Play& play = sport_->play;
@@ -489,7 +475,7 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
   legs_->balance_centre_of_mass(sport_->model.centre_of_mass(pose), play.balance_ahead);
   legs_->act(o, court.to_heading_vector(walk).head<2>(), -court.yaw, a);
   if (!legs_->stepping()) control::hold_standing_legs(sport_->model, pose, a, play.gravity_scale);
-  drive_arm(court, pose, legs_walking(walk), a);
+  drive_arm(court, pose, walk.norm() > 1e-9, a);
 }
 
 }  // namespace olympics::client

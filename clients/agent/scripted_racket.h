@@ -72,9 +72,6 @@ class ScriptedRacketPolicy : public Policy {
   // `legs_walking`: this tick the legs were asked to walk somewhere (Play::swing_once_settled).
   void drive_arm(const control::CourtFrame& court, const control::BodyPose& pose, bool legs_walking,
                  std::span<float> a);
-  // Are the legs still walking, for the arm (Play::swing_once_settled)? `walk`: where they are
-  // asked to go this tick (court frame, from the root). Latches swing_released_.
-  bool legs_walking(const Eigen::Vector3d& walk);
   // How far from the racket shoulder a rally ball is met: the arm's share of its reach and the
   // trunk's lean (m).
   double rally_reach() const;
@@ -99,10 +96,7 @@ class ScriptedRacketPolicy : public Policy {
   std::optional<StepController> legs_;
   std::optional<Stroke> stroke_;
   Eigen::Vector3d root_velocity_ = Eigen::Vector3d::Zero();  // heading frame, this tick
-  // The legs counted as settled for the stroke now planned (Play::settled_below_speed), though
-  // still stepping: the swing, once released, is not held back again for that ball.
-  bool swing_released_ = false;
-  double since_stroke_s_ = 1e9;  // time since the last planned contact
+  double since_stroke_s_ = 1e9;                              // time since the last planned contact
 };
 
 }  // namespace olympics::client

@@ -135,14 +135,6 @@ Play tennis_play() {
   // seeds 1-8, falls 23 in 20.5 min -> 7 in 21.0 min, points with a stroke 22.6% -> 19.0% (issue
   // 29, tennis falls in 1v1, second round; docs/racket-sports.md).
   p.swing_once_settled = true;
-  // Held until the legs stop (0.5 s before contact), the arm was still drawing back to the
-  // backswing as the forward turn began, and the face met the ball at a median 0.71 of the
-  // planned speed (the swing-start round). Released instead once within 0.3 m of the stance and
-  // the body slower than 0.25 m/s: ball-return tuning seeds 1-300, in / touched / falls 5 / 14 / 1
-  // -> 6 / 15 / 1; 1v1 tuning seeds 1-10, falls 9 in 25.7 min -> 3 in 21.1 min (issue 29, the
-  // swing-release round; docs/racket-sports.md).
-  p.settled_within_m = 0.3;
-  p.settled_below_speed = 0.25;
   return p;
 }
 

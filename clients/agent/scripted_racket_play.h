@@ -73,12 +73,6 @@ struct Play {
   // swing starts once they stop. false: the joint-space swing from the first tick the ball is
   // within reach, its posture solved where the body stands (so it sweeps across as the body walks).
   bool swing_once_settled = false;
-  // ...where, for a ball within reach, the legs count as settled once the stance is within
-  // `settled_within_m` and the root moves slower than `settled_below_speed` (m/s, level): the
-  // backswing is then drawn while they step the last few cm, and stays drawn for that ball.
-  // 0: settled only once they are no longer asked to walk.
-  double settled_within_m = 0;
-  double settled_below_speed = 0;
   std::vector<double> arc_speeds;
   double arc_drive = 1;  // the arc is driven this much faster than planned (the arm lags)
   // Once the ball is within reach, the arc is swung in joint space (scripted_tennis_swing.h):
