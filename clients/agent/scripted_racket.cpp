@@ -469,7 +469,13 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
     // table tennis stands still); the partners' marks are staggered, the left one nearer the net.
     double back = doubles_ && team_coming ? play.doubles_step_back : 0;
     if (doubles_) back -= sport_->game.partner_forward(home_y > 0);
-    walk = Eigen::Vector3d(play.home_x - back, home_y, 0) - court.root;
+    // Table-tennis doubles: the right-hand partner whose stroke is next waits nearer the centre
+    // line, where the opponents' balls come (Play::doubles_next_right_y).
+    double wait_y = home_y;
+    if (doubles_ && sport_->game.on_table && home_y < 0 && my_turn_ == 1 && !team_coming &&
+        play.doubles_next_right_y)
+      wait_y = *play.doubles_next_right_y;
+    walk = Eigen::Vector3d(play.home_x - back, wait_y, 0) - court.root;
   }
   walk.z() = 0;
   legs_->balance_centre_of_mass(sport_->model.centre_of_mass(pose), play.balance_ahead);

@@ -58,6 +58,13 @@ Play table_play() {
   // degrees 111 in (88 out: on the receiver's left half), 5 degrees 182 in (18 lets, no fault), 7
   // degrees 168 in (docs/racket-sports.md, the doubles serve).
   p.doubles_serve_turn = 5 * M_PI / 180;
+  // Doubles: the right-hand partner, its stroke next, waits on the centre line (its mark: y =
+  // -0.4 m). Opponents aim at the centre line; the third ball (the partner's first stroke) came
+  // down 0.3-0.6 m toward the partner and, met 0.25 m right of the root, needed the right-hand
+  // player to walk 0.4-1 m in about 0.85 s: it played 20 of 131 (the left-hand one 82 of 133).
+  // Tuning seeds 1-12: third ball played 27.5% -> 44.3% of the points reaching it, 4 or more
+  // strokes 9 -> 22, falls 3 -> 2 (issue 29; docs/racket-sports.md, the third ball).
+  p.doubles_next_right_y = 0.0;
   // The legs let go of balls they cannot get to: a ball swung at and missed is not chased along
   // its path behind the player, and a ball out of reach is walked to only while its stance is
   // within 0.6 m/s x the time left + 0.5 m. Of the 12 falls traced in 1v1 on tuning seeds 1-40,

@@ -51,6 +51,9 @@ struct Play {
   // radians) than planned. Swung across the body toward the diagonal, the arm sends the ball about
   // 11 degrees right of the planned line (tuning seeds 1-4: 25.5 degrees asked, 14.7 delivered).
   double doubles_serve_turn = 0;
+  // Table-tennis doubles: the right-hand partner (facing the net; its mark 0.2 m further back)
+  // waits at this y (court frame, + left) while its stroke is next; none: at its mark.
+  std::optional<double> doubles_next_right_y;
   double walk_speed = 0.6;       // m/s the legs cover, roughly, toward a ball out of reach
   double balance_ahead = -0.03;  // the centre of mass held this far ahead of the ankles
   double horizon_s = 0;          // how far ahead the ball is predicted
