@@ -51,6 +51,10 @@ struct Play {
   // radians) than planned. Swung across the body toward the diagonal, the arm sends the ball about
   // 11 degrees right of the planned line (tuning seeds 1-4: 25.5 degrees asked, 14.7 delivered).
   double doubles_serve_turn = 0;
+  // The face is asked for this far off where the plan meets the ball (heading frame, m), for the
+  // arm's steady miss; only for balls met between the racket shoulder's line and the root's
+  // (face_aim_bias below).
+  Eigen::Vector3d face_aim_bias = Eigen::Vector3d::Zero();
   double walk_speed = 0.6;       // m/s the legs cover, roughly, toward a ball out of reach
   double balance_ahead = -0.03;  // the centre of mass held this far ahead of the ankles
   double horizon_s = 0;          // how far ahead the ball is predicted
@@ -94,5 +98,10 @@ struct Play {
 
 Play table_play();
 Play tennis_play();
+
+// The face's aim bias (Play::face_aim_bias) for a ball met at `met` beside a racket shoulder at
+// `shoulder` (heading frame, from the root): only between the shoulder's line and the root's.
+Eigen::Vector3d face_aim_bias(const Play& play, const Eigen::Vector3d& met,
+                              const Eigen::Vector3d& shoulder);
 
 }  // namespace olympics::client::racket_play
