@@ -268,7 +268,9 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
       // a ball out of reach yet is prepared for as seen from where the legs are taking the body.
       CourtFrame seen_from = court;
       if (!swing_ready) seen_from.root.head<2>() = stroke_->stance.head<2>();
-      g.position = seen_from.to_heading_point(face) - root_velocity * ahead;
+      const Eigen::Vector3d met = seen_from.to_heading_point(contact);
+      g.position = seen_from.to_heading_point(face) - root_velocity * ahead +
+                   racket_play::face_aim_bias(play, met, pose.position[kRShoulder]);
       g.axis = court.to_heading_vector(normal);
       if (!stroke_->pivot && play.draw_s > 0) {
         // Drawn back only in time for the swing: until then the face waits at the ready point

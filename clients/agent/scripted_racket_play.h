@@ -54,6 +54,10 @@ struct Play {
   // Table-tennis doubles: the right-hand partner (facing the net; its mark 0.2 m further back)
   // waits at this y (court frame, + left) while its stroke is next; none: at its mark.
   std::optional<double> doubles_next_right_y;
+  // The face is asked for this far off where the plan meets the ball (heading frame, m), for the
+  // arm's steady miss; only for balls met between the racket shoulder's line and the root's
+  // (face_aim_bias below).
+  Eigen::Vector3d face_aim_bias = Eigen::Vector3d::Zero();
   double walk_speed = 0.6;       // m/s the legs cover, roughly, toward a ball out of reach
   double balance_ahead = -0.03;  // the centre of mass held this far ahead of the ankles
   double horizon_s = 0;          // how far ahead the ball is predicted
@@ -97,5 +101,10 @@ struct Play {
 
 Play table_play();
 Play tennis_play();
+
+// The face's aim bias (Play::face_aim_bias) for a ball met at `met` beside a racket shoulder at
+// `shoulder` (heading frame, from the root): only between the shoulder's line and the root's.
+Eigen::Vector3d face_aim_bias(const Play& play, const Eigen::Vector3d& met,
+                              const Eigen::Vector3d& shoulder);
 
 }  // namespace olympics::client::racket_play

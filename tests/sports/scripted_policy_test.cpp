@@ -13,6 +13,8 @@
 #include "registry.h"
 #include "scripted_racket.h"
 #include "scripted_racket_play.h"
+// The play settings (the name above is this folder's in-process match helper).
+#include "../../clients/agent/scripted_racket_play.h"
 #include "smpl_observation.h"
 #include "step_controller.h"
 
@@ -268,6 +270,26 @@ TEST(ScriptedRacketPolicy, LetsGoOfABallItSwungAtAndMissed) {
   std::printf("balls swung past %d, chased after %d\n", swung_past, chased);
   ASSERT_GE(swung_past, 10);
   EXPECT_EQ(chased, 0);
+}
+
+// The table-tennis arm's face came short, to the right of the ball, and the missed ball ran on
+// into the trunk: the face is asked for 4 cm left of where the plan meets the ball, but only where
+// such a ball meets the trunk, between the racket shoulder's line and the root's. Asked for
+// everywhere it took the arm further across the body, and 1v1 falls rose (issue 29,
+// docs/racket-sports.md, the face aimed left between the shoulder and the root).
+TEST(ScriptedRacketPolicy, AimsTheFaceLeftOnlyBetweenTheShoulderAndTheRoot) {
+  namespace rp = olympics::client::racket_play;
+  const rp::Play play = rp::table_play();
+  const Eigen::Vector3d shoulder(0, -0.18, 0.4), left(0, 0.04, 0);
+  auto bias_at = [&](double y) {
+    return rp::face_aim_bias(play, Eigen::Vector3d(0.45, y, 0.15), shoulder);
+  };
+  EXPECT_TRUE(bias_at(-0.1).isApprox(left)) << "in front of the trunk, right of the root";
+  EXPECT_TRUE(bias_at(-0.25).isZero()) << "right of the shoulder: a miss passes beside the body";
+  EXPECT_TRUE(bias_at(0.05).isZero()) << "across the body";
+  EXPECT_TRUE(
+      rp::face_aim_bias(rp::tennis_play(), Eigen::Vector3d(0.45, -0.1, 0.15), shoulder).isZero())
+      << "tennis untouched";
 }
 
 // Two scripted table-tennis players finish a game to 11 by score, with rallies in it.
