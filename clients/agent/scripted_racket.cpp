@@ -471,11 +471,11 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
     // table tennis stands still); the partners' marks are staggered, the left one nearer the net.
     double back = doubles_ && team_coming ? play.doubles_step_back : 0;
     if (doubles_) back -= sport_->game.partner_forward(home_y > 0);
-    // Table-tennis doubles: the right-hand partner whose stroke is next waits nearer the centre
-    // line, where the opponents' balls come (Play::doubles_next_right_y).
+    // Table-tennis doubles (only table_play() sets it): the right-hand partner (home_y < 0 only
+    // in doubles) whose stroke is next waits nearer the centre line, where the opponents' balls
+    // come (Play::doubles_next_right_y).
     double wait_y = home_y;
-    if (doubles_ && sport_->game.on_table && home_y < 0 && my_turn_ == 1 && !team_coming &&
-        play.doubles_next_right_y)
+    if (play.doubles_next_right_y && home_y < 0 && my_turn_ == 1 && !team_coming)
       wait_y = *play.doubles_next_right_y;
     walk = Eigen::Vector3d(play.home_x - back, wait_y, 0) - court.root;
   }
