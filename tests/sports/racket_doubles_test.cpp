@@ -6,8 +6,8 @@
 #include <cmath>
 #include <vector>
 
+#include "racket_match_harness.h"
 #include "registry.h"
-#include "scripted_racket_play.h"
 #include "smpl_observation.h"
 
 namespace olympics::client {

@@ -10,11 +10,10 @@
 #include "core/rotation.h"
 #include "core/self_observation.h"
 #include "racket/racket_equipment.h"
+#include "racket_match_harness.h"
 #include "registry.h"
 #include "scripted_racket.h"
 #include "scripted_racket_play.h"
-// The play settings (the name above is this folder's in-process match helper).
-#include "../../clients/agent/scripted_racket_play.h"
 #include "smpl_observation.h"
 #include "step_controller.h"
 

@@ -5,8 +5,8 @@
 
 #include <cstdio>
 
+#include "racket_match_harness.h"
 #include "scripted_racket.h"
-#include "scripted_racket_play.h"
 
 namespace olympics::client {
 namespace {

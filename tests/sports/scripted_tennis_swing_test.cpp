@@ -7,9 +7,9 @@
 #include <cstdio>
 
 #include "core/control_rate.h"
+#include "racket_match_harness.h"
 #include "registry.h"
 #include "scripted_racket.h"
-#include "scripted_racket_play.h"
 
 namespace olympics::client {
 namespace {

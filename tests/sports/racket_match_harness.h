@@ -1,5 +1,5 @@
-// Scripted racket players in process (the racket policy tests): a match of `sport` with every slot
-// played by a ScriptedRacketPolicy, stepped a tick at a time.
+// The racket policy tests' match harness: a match of `sport` in process with every slot played by
+// a scripted racket player (ScriptedRacketPolicy), stepped a tick at a time.
 #pragma once
 
 #include <functional>
