@@ -18,10 +18,11 @@ constexpr int kAnkle[2] = {3, 7};  // left, right
 
 // The match: SMPL-X players in a basketball 1v1 that runs on for the whole trial (no shot clock's
 // restart, a fallen player left down), or the sandbox's solo SMPL humanoid.
-std::unique_ptr<SportMatch> shift_match(bool smplx, std::uint64_t seed, double seconds) {
+std::unique_ptr<SportMatch> shift_match(bool smplx, std::uint64_t seed, double seconds,
+                                        const std::string& falls = "report") {
   if (!smplx) return sport_or_throw("sandbox").create({"solo", seed, seconds, {}});
   return sport_or_throw("basketball")
-      .create({"1v1", seed, seconds, {{"shot_clock_s", 60}, {"falls", "report"}}});
+      .create({"1v1", seed, seconds, {{"shot_clock_s", 60}, {"falls", falls}}});
 }
 
 }  // namespace
@@ -80,6 +81,43 @@ std::vector<ShiftTrial> shift_trials(bool smplx, std::uint64_t seed, WeightShift
     if (m->outcome().match_over) break;
   }
   return trials;
+}
+
+Stepping step_in_place(std::uint64_t seed, double seconds,
+                       const client::control::SteppingPlan& plan,
+                       const client::control::LegSupportGains& gains) {
+  const std::unique_ptr<SportMatch> m = shift_match(true, seed, seconds + 1, "stand_up");
+  const BodyModel model = BodyModel::humanoid(core::HumanoidKind::SmplX);
+  Stepping out;
+  double started[2] = {0, 0};
+  int lifted[2] = {0, 0};
+  std::vector<float> obs[2], act[2];
+  const double dt = m->control_dt();
+  const int ticks = static_cast<int>(std::lround(seconds / dt));
+  for (int tick = 0; tick < ticks; ++tick) {
+    const double t = tick * dt;
+    for (int s = 0; s < 2; ++s) {
+      obs[s].assign(m->obs_size(), 0), act[s].assign(m->action_size(), 0);
+      m->observe(s, obs[s]);
+      const int now = plan.steps_lifted(t - started[s]);
+      out.steps += now - lifted[s];
+      lifted[s] = now;
+      client::control::hold_on_legs(model, model.pose_from_observation(obs[s]),
+                                    client::control::centre_of_mass_velocity(model, obs[s]),
+                                    plan.at(t - started[s]), act[s], gains);
+    }
+    m->step({std::span<const float>(act[0]), std::span<const float>(act[1])});
+    for (const auto& e : m->outcome().info.value("events", nlohmann::json::array())) {
+      const std::string call = e.value("call", "");
+      out.falls += call == "fall";
+      if (call == "stood_up") {
+        const int s = e.value("slot", 0);
+        started[s] = t + dt, lifted[s] = 0;
+      }
+    }
+  }
+  out.minutes = 2 * seconds / 60;
+  return out;
 }
 
 std::string describe(const ShiftTrial& t) {

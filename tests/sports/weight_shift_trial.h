@@ -35,4 +35,16 @@ std::vector<ShiftTrial> shift_trials(bool smplx, std::uint64_t seed,
 
 std::string describe(const ShiftTrial& t);
 
+struct Stepping {
+  int falls = 0;       // of both players
+  int steps = 0;       // feet lifted, both players
+  double minutes = 0;  // player-minutes
+};
+
+// Both SMPL-X players of a basketball 1v1 of `seed` step in place by `plan` for `seconds`; a
+// fallen player is stood up by the match and starts its plan again.
+Stepping step_in_place(std::uint64_t seed, double seconds,
+                       const client::control::SteppingPlan& plan,
+                       const client::control::LegSupportGains& gains);
+
 }  // namespace olympics::sports
