@@ -32,15 +32,15 @@ struct WeightShiftPlan {
 
 // Steps in place, the first onto the left foot: each step carries the weight across (from the
 // middle, the first, in half the time), waits on the foot, lifts the other, holds it, puts it
-// down. Measured (docs/basketball.md, "A weight shift onto one leg"): across in 5 s, 0.35 falls
-// a minute on unseen seeds; in 4 s, 0.95; in 3.5 s, 3.2 on tuning seeds.
+// down. Measured (docs/basketball.md, "A weight shift onto one leg"), falls a minute of both
+// players of a 1v1: across in 5 s, 0.75 on unseen seeds; in 4 s, 1.4; in 3.5 s, 1.5 on seeds 1-3.
 struct SteppingPlan {
-  double settle_s = 1.0;
-  double across_s = 5.0;
-  double loaded_s = 0.6;
-  double lift_s = 0.4;
-  double hold_s = 0.3;
-  double lift_m = 0.06;
+  double settle_s = 1.0;  // on both feet first
+  double across_s = 5.0;  // the weight carried from one foot to the other
+  double loaded_s = 0.6;  // on the foot before the other is lifted
+  double lift_s = 0.4;    // the free foot raised (and lowered)
+  double hold_s = 0.3;    // held up
+  double lift_m = 0.06;   // asked (it rises 4-7 cm)
 
   double step_s() const { return across_s + loaded_s + 2 * lift_s + hold_s; }
   // Steps whose foot has begun to rise by `t`.
