@@ -1,0 +1,51 @@
+// Timed plans of LegSupport for hold_on_legs. WeightShiftPlan: settle on both feet, carry the
+// weight over the stance foot by a minimum-jerk blend, lift the other foot, hold it up, put it
+// down, carry the weight back to the middle. SteppingPlan: steps in place, the weight carried
+// from foot to foot and the free foot lifted each time.
+#pragma once
+
+#include "control/leg_support.h"
+
+namespace olympics::client::control {
+
+struct WeightShiftPlan {
+  bool onto_left = true;
+  double settle_s = 1.0;      // on both feet before the shift
+  double shift_s = 3.0;       // the weight carried over the stance foot (and back); 2 s fell often
+  double loaded_s = 0.5;      // over the stance foot before the lift
+  double down_s = 0.0;        // and after the free foot is put down, before the shift back
+  double lift_s = 0.4;        // the free foot raised (and lowered)
+  double hold_s = 1.0;        // held up
+  double lift_m = 0.06;       // asked; the stance leg sags, so the foot rises 3-5 cm
+  double stance_share = 1.0;  // of the weight on the stance foot once shifted
+
+  // When each phase ends, s from the start.
+  double shifted_at() const { return settle_s + shift_s; }
+  double lifted_at() const { return shifted_at() + loaded_s + lift_s; }
+  double held_until() const { return lifted_at() + hold_s; }
+  double lowered_at() const { return held_until() + lift_s; }
+  double back_at() const { return lowered_at() + down_s + shift_s; }
+
+  // What the legs are asked at `t` s from the start.
+  LegSupport at(double t) const;
+};
+
+// Steps in place, the first onto the left foot: each step carries the weight across (from the
+// middle, the first, in half the time), waits on the foot, lifts the other, holds it, puts it
+// down. Measured (docs/basketball.md, "A weight shift onto one leg"), falls a minute of both
+// players of a 1v1: across in 5 s, 0.75 on unseen seeds; in 4 s, 1.4; in 3.5 s, 1.5 on seeds 1-3.
+struct SteppingPlan {
+  double settle_s = 1.0;  // on both feet first
+  double across_s = 5.0;  // the weight carried from one foot to the other
+  double loaded_s = 0.6;  // on the foot before the other is lifted
+  double lift_s = 0.4;    // the free foot raised (and lowered)
+  double hold_s = 0.3;    // held up
+  double lift_m = 0.06;   // asked (it rises 4-7 cm)
+
+  double step_s() const { return across_s + loaded_s + 2 * lift_s + hold_s; }
+  // Steps whose foot has begun to rise by `t`.
+  int steps_lifted(double t) const;
+  LegSupport at(double t) const;
+};
+
+}  // namespace olympics::client::control
