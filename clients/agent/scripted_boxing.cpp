@@ -147,21 +147,29 @@ void ScriptedBoxingPolicy::start(const MatchInfo& match) {
   const ObservationLayout& l = match.observation;
   blocks_ = {l.offset("opponent_root", "position"), l.offset("opponent_targets", "chest"),
              l.offset("bout", "resting")};
-  control_dt_ = match.control_dt;
-  gains_ = boxing_step_gains();
+  start_alone(match.control_dt);
+}
+
+void ScriptedBoxingPolicy::start_alone(double control_dt) {
+  control_dt_ = control_dt;
   legs_.emplace(gains_, control_dt_);
   clock_s_ = 0;
   planted_ = was_resting_ = false;
 }
 
 void ScriptedBoxingPolicy::act(std::span<const float> o, std::span<float> a) {
+  const Blocks& at = blocks_;
+  act_against(o, {vec3(o, at.opponent), vec3(o, at.chest), o[at.resting] > 0.5}, a);
+}
+
+void ScriptedBoxingPolicy::act_against(std::span<const float> o, const Bout& bout,
+                                       std::span<float> a) {
   if (!legs_) throw std::logic_error("ScriptedBoxingPolicy: act() before start()");
   if (a.size() != kActions)
     throw std::invalid_argument("the scripted boxing policy drives the SMPL humanoid (69 actions)");
   std::fill(a.begin(), a.end(), 0.0f);
-  const Blocks& at = blocks_;
-  const bool resting = o[at.resting] > 0.5;
-  const Eigen::Vector3d opponent = vec3(o, at.opponent);
+  const bool resting = bout.resting;
+  const Eigen::Vector3d& opponent = bout.opponent;
   const Eigen::Vector2d line = opponent.head<2>();
   const double distance = line.norm();
   const Eigen::Vector2d towards =
@@ -209,7 +217,7 @@ void ScriptedBoxingPolicy::act(std::span<const float> o, std::span<float> a) {
   const int n = static_cast<int>(clock_s_ / kPunchEvery_s);
   if (into > kPunchFor_s) return;
   const Arm arm = n % 2 == 0 ? Arm::Left : Arm::Right;
-  const Eigen::Vector3d target = vec3(o, at.chest);
+  const Eigen::Vector3d& target = bout.chest;
   const Eigen::Vector3d shoulder = body_position(o, arm == Arm::Right ? kRShoulder : kLShoulder);
   if ((target - shoulder).norm() > kPunchReach_m) return;
   bend_trunk(a, kPunchLean, arm == Arm::Right ? kPunchTurn : -kPunchTurn);  // shoulder forward

@@ -13,6 +13,7 @@
 // - it stands still during the rest between rounds.
 #pragma once
 
+#include <Eigen/Core>
 #include <optional>
 
 #include "policies.h"
@@ -28,8 +29,21 @@ void hold_guard(std::span<const float> observation, std::span<float> action);
 
 class ScriptedBoxingPolicy : public Policy {
  public:
+  // `legs`: the stepping controller's gains (a test tries others).
+  explicit ScriptedBoxingPolicy(const StepGains& legs = boxing_step_gains()) : gains_(legs) {}
   void start(const MatchInfo& match) override;
   void act(std::span<const float> observation, std::span<float> action) override;
+
+  // What act() reads of the bout besides the body (heading frame, from the root).
+  struct Bout {
+    Eigen::Vector3d opponent{0, 0, 0};  // the opponent's root
+    Eigen::Vector3d chest{0, 0, 0};     // where its punches go
+    bool resting = false;               // between rounds
+  };
+  // Alone, with no bout's observation (a test in the sandbox's solo mode before a point it takes
+  // for its opponent): start with the tick's length, then act against the bout it is given.
+  void start_alone(double control_dt);
+  void act_against(std::span<const float> self, const Bout& bout, std::span<float> action);
   // Both feet planted where they stand (punching when in range), as of the last act().
   bool planted() const { return planted_; }
 

@@ -100,6 +100,15 @@ Eigen::Vector2d StepController::placement_origin() {
   return gains_.centre_of_mass_placement * *step_com_;
 }
 
+// Where the body would come to rest over a foot put there `in_s` seconds from now (heading frame,
+// from the root): the balanced point (the centre of mass when balance_centre_of_mass) carried on
+// by the velocity for `in_s`, plus the velocity times sqrt(height / g), the linear inverted
+// pendulum's capture point.
+Eigen::Vector2d StepController::capture_point(std::span<const float> o, double in_s) const {
+  const Eigen::Vector2d balanced = balance_com_ ? com_offset_ : Eigen::Vector2d::Zero();
+  return balanced + root_velocity(o).head<2>() * (in_s + std::sqrt(root_height(o) / 9.81));
+}
+
 void StepController::begin_step(std::span<const float> o, bool left_swings) {
   left_swings_ = left_swings;
   phase_s_ = 0;
@@ -115,10 +124,18 @@ void StepController::act(std::span<const float> o, const Eigen::Vector2d& target
   const double ground = -root_height(o);  // the floor, root-relative
   if (!stepping_) {
     const bool must_turn = g.turn_start > 0 && std::abs(turn) > g.turn_start;
-    if (distance < g.start_m && !must_turn && !losing_balance(o)) return stand(o, a);
+    const bool losing = losing_balance(o);
+    if (distance < g.start_m && !must_turn && !losing) return stand(o, a);
     stepping_ = true;
-    begin_step(o, target.y() > 0);
-  } else if (phase_s_ >= g.step_s) {
+    catching_ = losing && g.catch_step_s > 0;
+    bool left = target.y() > 0;
+    if (catching_ && g.catch_on_the_falling_side) {
+      const double feet_y = 0.5 * (body_position(o, kLAnkle).y() + body_position(o, kRAnkle).y());
+      left = capture_point(o, 0).y() > feet_y;
+    }
+    begin_step(o, left);
+  } else if (phase_s_ >= (catching_ ? g.catch_step_s : g.step_s)) {
+    catching_ = false;
     auto down = [&](int ankle) {
       return body_position(o, ankle).z() < ground + kAnkleHeight + 0.02;
     };
@@ -142,9 +159,15 @@ void StepController::act(std::span<const float> o, const Eigen::Vector2d& target
   desired_v.y() = std::clamp(desired_v.y(), -g.max_side_speed, g.max_side_speed);
   if (g.max_forward_speed > 0)
     desired_v.x() = std::clamp(desired_v.x(), -g.max_forward_speed, g.max_forward_speed);
-  const double remaining = g.step_s - phase_s_;
+  const double step_s = catching_ ? g.catch_step_s : g.step_s;
+  const double remaining = step_s - phase_s_;
   Eigen::Vector2d foot = v * (remaining + g.lead_s) + g.velocity_gain * (v - desired_v);
   foot += placement_origin();
+  if (catching_) {
+    constexpr double kCatchBeyond_m = 0.05;
+    foot = capture_point(o, remaining);
+    if (v.norm() > 1e-6) foot += kCatchBeyond_m * v.normalized();
+  }
   foot.y() += side * g.stance_width;
   // Moving sideways, the foot on the side of the motion leads; side_step moves where it lands.
   const bool leads = side * desired_v.y() > 0;
@@ -161,7 +184,7 @@ void StepController::act(std::span<const float> o, const Eigen::Vector2d& target
     foot = stance_ankle + reach * (g.max_step / reach.norm());
   }
 
-  const double s = std::clamp(phase_s_ / g.step_s, 0.0, 1.0);
+  const double s = std::clamp(phase_s_ / step_s, 0.0, 1.0);
   const double blend = std::clamp(2 * s, 0.0, 1.0);  // the foot gets there by mid-swing
   const Eigen::Vector2d horizontal =
       lift_off_ + (foot - lift_off_) * (blend * blend * (3 - 2 * blend));
