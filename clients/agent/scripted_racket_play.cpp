@@ -76,8 +76,8 @@ Play table_play() {
   // A point that ends while a player's stroke is committed (its ball on the body, say) left that
   // stroke running into the next point: committed, it counted down against the new feed, was
   // let go as missed, and the fed player planned nothing for the feed, which then struck its
-  // body (1v1 tuning seeds 1-8: 46 of the 67 feeds on the body had no stroke planned). Dropped at
-  // the new point: points without a stroke 23.2% -> 15.7%, strokes per point 1.95 -> 2.03
+  // body or passed it (1v1 tuning seeds 1-2: 6 of 35 feeds). Dropped at the new point (1v1
+  // tuning seeds 1-8): points without a stroke 23.2% -> 15.7%, strokes per point 1.95 -> 2.03
   // (issue 29, short points; docs/racket-sports.md).
   p.forget_stroke_at_new_point = true;
   // The face asked for 4 cm left of the planned contact (issue 29, body touches): it came short,
