@@ -69,6 +69,11 @@ struct Play {
   // the legs stand until the ball is dead or struck, rather than chase it along its path behind
   // the player. false: the planner picks a later point on the path and the legs walk there.
   bool let_go_missed = false;
+  // A new point drops the stroke left from the point before. Kept, a stroke committed when the
+  // last point ended runs out against the new ball and marks it missed (let_go_missed): the fed
+  // player then plans nothing for the feed. 1v1 only (doubles not measured: its third-ball wait
+  // test moved to its bar). false: kept (tennis; not measured there).
+  bool forget_stroke_at_new_point = false;
   // The swing as an arc about the vertical through the shoulder (the arm turning as one, the
   // face at a constant distance), at the least of `arc_speeds` that returns the ball in.
   double max_back_angle = 0;  // radians of backswing along the arc; 0: a straight swing
