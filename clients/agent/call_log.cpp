@@ -42,8 +42,10 @@ std::vector<std::string> call_lines(int tick, const std::string& info_text,
         line += " team " + std::to_string(e["team"].get<int>());
       for (const char* what : {"reason", "kind", "line"})
         if (e.contains(what)) line += " (" + e[what].get<std::string>() + ")";
-      if (e.contains("strokes"))
-        line += " after " + std::to_string(e["strokes"].get<int>()) + " strokes";
+      if (e.contains("strokes")) {
+        const int strokes = e["strokes"].get<int>();
+        line += " after " + std::to_string(strokes) + (strokes == 1 ? " stroke" : " strokes");
+      }
       if (e.contains("card_0"))
         line += " card " + std::to_string(e["card_0"].get<int>()) + "-" +
                 std::to_string(e["card_1"].get<int>());

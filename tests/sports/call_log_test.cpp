@@ -40,6 +40,21 @@ TEST(CallLog, PrintsBasketballsCallsAndLeavesOutTheRest) {
   EXPECT_EQ(lines[2], "tick 240: miss slot 0  2-0");
 }
 
+// A racket point gives its rally's strokes, "stroke" when there was one (the main job's demo).
+TEST(CallLog, ARacketPointSaysHowManyStrokesItsRallyHad) {
+  const auto announced = announced_calls("table_tennis", "1v1");
+  auto point = [](int strokes) {
+    return nlohmann::json{
+        {"call", "point"}, {"winner_team", 1}, {"reason", "not_over"}, {"strokes", strokes}};
+  };
+  const auto lines = call_lines(
+      64, info_with(nlohmann::json::array({point(0), point(1), point(4)}), "0-1"), announced);
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0], "tick 64: point to team 1 (not_over) after 0 strokes  0-1");
+  EXPECT_EQ(lines[1], "tick 64: point to team 1 (not_over) after 1 stroke  0-1");
+  EXPECT_EQ(lines[2], "tick 64: point to team 1 (not_over) after 4 strokes  0-1");
+}
+
 // The agent's list before the sports announced their own calls: the sports there were then,
 // basketball aside, print what they printed then, no more and no less.
 TEST(CallLog, OtherSportsAnnounceWhatTheAgentPrintedBefore) {
