@@ -86,12 +86,13 @@ TEST(RacketDoubles, ScriptedTableTennisPartnersKeepApartAndStand) {
   EXPECT_LE(close, 0.05);
 }
 
-// Scripted table-tennis 2v2, seeds 1-3, 30 s at most each: where the right-hand partner (facing
+// Scripted table-tennis 2v2, seeds 1-8, 30 s at most each: where the right-hand partner (facing
 // the net) stands when the ball comes back to its side after its partner's stroke (the point's
 // third ball or later: its own stroke next). Court frame, y + left; its mark is at y = -0.4 m.
+// (Seeds 1-3 gave 17-29 balls, too few to tell the wait from noise near the bar.)
 std::vector<double> right_partner_y_when_its_ball_comes() {
   std::vector<double> ys;
-  for (std::uint64_t seed : {1, 2, 3}) {
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
     ScriptedRacketPlay play("table_tennis", {"2v2", seed, 30.0, {}});
     const int y = play.layout.offset("court_position", "y");
     const int coming = play.layout.offset("rally", "coming");
@@ -124,7 +125,9 @@ TEST(RacketDoubles, ScriptedTableTennisRightPartnerWaitsTowardTheCentre) {
   for (double v : ys) mean += v / ys.size();
   std::printf("right-hand partner at y %.2f m (mean of %zu) when its ball comes\n", mean,
               ys.size());
-  EXPECT_GT(mean, -0.34);  // at its mark: -0.38 (25 balls); walking to the centre: -0.31 (29)
+  // Seeds 1-8: walking to the centre -0.32 (77 balls); the same with the stroke dropped at a new
+  // point in doubles too, -0.33 (61); at its mark (the wait off, the stroke dropped) -0.38 (62).
+  EXPECT_GT(mean, -0.34);
 }
 
 }  // namespace
