@@ -439,8 +439,7 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
     coming = coming && mine;
   }
   if (!coming || new_point) missed_ = false;
-  // 1v1 only: doubles keeps the stroke (not measured there; its partners' turn logic differs).
-  if (new_point && play.forget_stroke_at_new_point && !doubles_) stroke_.reset();
+  if (new_point && play.forget_stroke_at_new_point) stroke_.reset();
   if (coming && stroke_ && stroke_->reachable &&
       stroke_->time_to_hit - control_dt_ < play.commit_s) {
     // Committed: the swing is under way; the ball is met where it was planned.
