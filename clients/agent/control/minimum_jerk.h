@@ -11,4 +11,10 @@ inline double minimum_jerk(double s) {
   return s * s * s * (10 - 15 * s + 6 * s * s);
 }
 
+// The blend's rate (1/s) at fraction s of a blend lasting `seconds`; 0 outside it.
+inline double minimum_jerk_rate(double s, double seconds) {
+  if (s <= 0 || s >= 1) return 0;
+  return 30 * s * s * (1 - s) * (1 - s) / seconds;
+}
+
 }  // namespace olympics::client::control

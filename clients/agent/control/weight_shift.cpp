@@ -3,16 +3,6 @@
 #include "control/minimum_jerk.h"
 
 namespace olympics::client::control {
-namespace {
-
-// The minimum-jerk blend's rate at fraction s of a blend lasting `seconds`.
-double minimum_jerk_rate(double s, double seconds) {
-  if (s <= 0 || s >= 1) return 0;
-  return 30 * s * s * (1 - s) * (1 - s) / seconds;
-}
-
-}  // namespace
-
 LegSupport WeightShiftPlan::at(double t) const {
   // The stance foot's share: 0.5 -> stance_share over the shift, back over the return.
   const double out = (t - settle_s) / shift_s;
