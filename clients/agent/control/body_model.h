@@ -46,6 +46,7 @@ class BodyModel {
 
   int size() const { return static_cast<int>(bodies_.size()); }
   const ModelBody& body(int i) const { return bodies_[i]; }
+  double total_mass() const { return total_mass_; }  // kg, every body
   // Is `body` `ancestor` or below it in the tree?
   bool in_subtree(int body, int ancestor) const;
 

@@ -12,12 +12,6 @@ namespace {
 constexpr int kHip[2] = {1, 5};  // left, right: hip, knee, ankle follow
 constexpr double kGravity = 9.81;
 
-double total_mass(const BodyModel& model) {
-  double kg = 0;
-  for (int b = 0; b < model.size(); ++b) kg += model.body(b).mass;
-  return kg;
-}
-
 // Hip to ankle at rest: the parallelogram's arm.
 double leg_length(const BodyModel& model, int leg) {
   return (model.body(kHip[leg] + 1).offset + model.body(kHip[leg] + 2).offset).norm();
@@ -49,7 +43,7 @@ Eigen::Vector3d centre_of_mass_velocity(const BodyModel& model,
     momentum += model.body(b).mass *
                 Eigen::Vector3d(observation[at], observation[at + 1], observation[at + 2]);
   }
-  return momentum / total_mass(model);
+  return momentum / model.total_mass();
 }
 
 void hold_on_legs(const BodyModel& model, const BodyPose& pose, const Eigen::Vector3d& com_velocity,
@@ -78,7 +72,7 @@ void hold_on_legs(const BodyModel& model, const BodyPose& pose, const Eigen::Vec
       (g.side_p * (com.y() - side) + g.side_d * (v.y() - support.left_share_rate * across));
   const double forward_push = g.forward_p * (com.x() - forward) + g.forward_d * v.x();
   const Eigen::Vector3d up = pose.rotation[0].col(2);
-  const double weight = total_mass(model) * kGravity;
+  const double weight = model.total_mass() * kGravity;
   for (int leg = 0; leg < 2; ++leg) {
     const double w = support.half_and_half ? 0.5 : share[leg];
     // Where this foot's share of the ground's force acts: under the centre of mass forward (the
