@@ -97,7 +97,7 @@ std::vector<double> right_partner_y_when_its_ball_comes() {
     const int y = play.layout.offset("court_position", "y");
     const int coming = play.layout.offset("rally", "coming");
     const int struck = play.layout.offset("rally", "struck");
-    std::vector<float> was_coming(4, 0), left_struck(2, 0);
+    std::vector<float> was_coming(2, 0), left_struck(2, 0);  // a team each
     while (!play.over()) {
       play.tick();
       for (int team = 0; team < 2; ++team) {
