@@ -92,7 +92,7 @@ bool plant_would_hold(std::span<const float> o, const Eigen::Vector3d& com,
                       const Eigen::Vector2d& towards) {
   const Eigen::Vector3d v = root_velocity(o);
   const double ankles_x = 0.5 * (body_position(o, kLAnkle).x() + body_position(o, kRAnkle).x());
-  const double capture_x = com.x() + v.x() * std::sqrt(root_height(o) / 9.81);
+  const double capture_x = com.x() + v.x() * pendulum_time_s(o);
   return capture_x - ankles_x > -kPlantCaptureBehind_m &&
          v.head<2>().dot(towards) > -kPlantBackSpeed;
 }

@@ -104,9 +104,11 @@ Eigen::Vector2d StepController::placement_origin() {
 // from the root): the balanced point (the centre of mass when balance_centre_of_mass) carried on
 // by the velocity for `in_s`, plus the velocity times sqrt(height / g), the linear inverted
 // pendulum's capture point.
+double pendulum_time_s(std::span<const float> o) { return std::sqrt(root_height(o) / 9.81); }
+
 Eigen::Vector2d StepController::capture_point(std::span<const float> o, double in_s) const {
   const Eigen::Vector2d balanced = balance_com_ ? com_offset_ : Eigen::Vector2d::Zero();
-  return balanced + root_velocity(o).head<2>() * (in_s + std::sqrt(root_height(o) / 9.81));
+  return balanced + root_velocity(o).head<2>() * (in_s + pendulum_time_s(o));
 }
 
 void StepController::begin_step(std::span<const float> o, bool left_swings) {

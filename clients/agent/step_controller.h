@@ -92,6 +92,10 @@ StepGains side_stepping(StepGains base = {});
 void write_leg_toward(std::span<float> action, int hip, const Eigen::Vector3d& hip_to_ankle);
 void write_flat_foot(std::span<const float> observation, std::span<float> action, int knee);
 
+// The linear inverted pendulum's time constant sqrt(h / g) at the root's height: a body moving at
+// v comes to rest over a foot v times this ahead of its centre of mass (the capture point).
+double pendulum_time_s(std::span<const float> observation);
+
 class StepController {
  public:
   // `control_dt`: seconds per tick, the match's (MatchInfo::control_dt).
