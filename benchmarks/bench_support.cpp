@@ -1,5 +1,7 @@
 #include "bench_support.h"
 
+#include <time.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -185,8 +187,15 @@ nlohmann::json speed_vs_bare(const std::string& sport, const core::ModelSpec& pl
           {"ticks_per_match", ticks}};
 }
 
-// Sandbox 1v1 matches, zero actions, played back to back; ticks per wall second.
-double sandbox_ticks_per_second(int matches, double seconds) {
+namespace {
+double this_thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return t.tv_sec + t.tv_nsec * 1e-9;
+}
+}  // namespace
+
+TickRate sandbox_tick_rate(int matches, double seconds) {
   const sports::Sport& sandbox = sports::sport_or_throw("sandbox");
   std::vector<std::unique_ptr<sports::SportMatch>> games;
   for (int m = 0; m < matches; ++m)
@@ -195,6 +204,7 @@ double sandbox_ticks_per_second(int matches, double seconds) {
   std::vector<std::span<const float>> actions(2, zero);
   long ticks = 0;
   auto start = Clock::now();
+  const double cpu_start = this_thread_cpu_seconds();
   double elapsed = 0;
   std::uint64_t next_seed = matches;
   while (elapsed < seconds) {
@@ -208,7 +218,7 @@ double sandbox_ticks_per_second(int matches, double seconds) {
     }
     elapsed = std::chrono::duration<double>(Clock::now() - start).count();
   }
-  return ticks / elapsed;
+  return {ticks / elapsed, ticks / (this_thread_cpu_seconds() - cpu_start)};
 }
 
 double sum_over_threads(int threads, const std::function<double(int)>& rate) {

@@ -56,8 +56,13 @@ std::array<double, 3> ratio_95(const std::vector<double>& counts,
 double sum_over_threads(int threads, const std::function<double(int)>& rate);
 
 // Sandbox 1v1 matches (`matches` of them, round robin), zero actions, observed and stepped back
-// to back on the calling thread; ticks per wall second.
-double sandbox_ticks_per_second(int matches, double seconds);
+// to back on the calling thread for `seconds`: ticks per wall second, and per CPU second of the
+// calling thread (what a core of its own would do, however loaded the machine is).
+struct TickRate {
+  double per_second = 0;
+  double per_cpu_second = 0;
+};
+TickRate sandbox_tick_rate(int matches, double seconds);
 
 // Ticks per second of a sport's mode (1v1 unless said) with zero actions, one core: matches of
 // `ticks` each (or until one ends), only the stepping timed.

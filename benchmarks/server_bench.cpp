@@ -171,7 +171,7 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
   // pair is taken and the median reported.
   constexpr int kRounds = 3;
   const double window = o.seconds / kRounds;
-  std::vector<double> served_rates, bare_rates, ratios, capacity_ratios;
+  std::vector<double> served_rates, bare_rates, bare_cpu_rates, ratios, capacity_ratios;
   std::this_thread::sleep_for(std::chrono::milliseconds(300));  // matches under way
   for (int round = 0; round < kRounds; ++round) {
     const long before = ticks;
@@ -185,12 +185,15 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
     paused = true;
     std::this_thread::sleep_for(std::chrono::milliseconds(50));  // in-flight ticks drain
     if (pin) pin_this_thread(0, 0);  // the bare figure: on a worker's core
-    bare_rates.push_back(sandbox_ticks_per_second(std::max(1, o.matches / o.workers), window));
+    const TickRate bare = sandbox_tick_rate(std::max(1, o.matches / o.workers), window);
+    bare_rates.push_back(bare.per_second);
+    bare_cpu_rates.push_back(bare.per_cpu_second);
     if (pin) pin_this_thread(o.workers, cores - 1);
     paused = false;
     ratios.push_back(served_rates.back() / bare_rates.back());
-    // What a fully busy core would serve: ticks per second of worker CPU time.
-    capacity_ratios.push_back(served_ticks / worker_cpu / bare_rates.back());
+    // The server's own cost: ticks per CPU second of the workers over ticks per CPU second of the
+    // bare stepping (both CPU time, so a loaded machine's stolen time counts on neither side).
+    capacity_ratios.push_back(served_ticks / worker_cpu / bare.per_cpu_second);
   }
   const double measured_s = std::chrono::duration<double>(Clock::now() - measuring_from).count();
   stop_clients = true;
@@ -224,6 +227,7 @@ nlohmann::json run_server_bench(const ServerBenchOptions& o) {
           {"workers_pinned", pin},
           {"served_ticks_per_s_per_worker", percentile(served_rates, 0.5)},
           {"bare_physics_ticks_per_s", percentile(bare_rates, 0.5)},
+          {"bare_physics_ticks_per_cpu_s", percentile(bare_cpu_rates, 0.5)},
           {"ratio_server_over_bare", percentile(ratios, 0.5)},
           {"ratios", ratios},
           {"ratio_per_worker_cpu_second", percentile(capacity_ratios, 0.5)},

@@ -23,8 +23,8 @@ constexpr int kAgents = 2;  // sandbox 1v1, both slots played by the vector clie
 // as many sandbox matches as the server's workers hold per core, back to back; total ticks per
 // second. (As many: 128 worlds a core step about 12% slower than 4, which fit the caches.)
 double bare_ticks_all_cores(int cores, int matches_per_core, double seconds) {
-  return sum_over_threads(cores,
-                          [&](int) { return sandbox_ticks_per_second(matches_per_core, seconds); });
+  return sum_over_threads(
+      cores, [&](int) { return sandbox_tick_rate(matches_per_core, seconds).per_second; });
 }
 
 // Agent-steps per second of one vector client playing zero actions, for `seconds`.
