@@ -76,6 +76,9 @@ struct StepGains {
   double catch_step_s = 0;
   // The catch step by the foot on the side the capture point lies (else by the foot on the
   // target's side): the feet cannot cross, so the other foot cannot catch a sideways fall.
+  // In bouts a boxer is mostly knocked toward the side the other boxer stands; that foot then
+  // steps toward it and fell in 12 of 92 such starts, the target's foot in none of 72
+  // (docs/combat-sports.md, thirteenth round).
   bool catch_on_the_falling_side = false;
 };
 
