@@ -54,9 +54,10 @@ struct SteppingPlan {
 };
 
 // The slow walk forward (docs/basketball.md, "A slow walk forward on the weight shift"): steps
-// in place as above with the free foot put 5 cm ahead, on slow_walk_gains(). Measured on tuning
-// seeds 1-10: 0.12 falls and 0.63 m forward a minute at 8.5 steps a minute (10 cm steps: 2.0
-// falls a minute).
+// in place as above with the free foot put 5 cm ahead, on slow_walk_gains(). Measured, both
+// players of full-court 1v1s: 0.20 falls and 0.62 m forward a minute at 8.5 steps a minute on
+// unseen seeds (main's steps in place: 0.33 falls, 0.67 m backward); 10 cm steps fell 2.0 times
+// a minute on the tuning seeds.
 SteppingPlan slow_walk_plan();
 // hold_on_legs' gains for it: the centre of mass held over the ankles, not 3 cm ahead (ahead,
 // steps in place drift back about 7 cm each, which 5 cm steps do not outrun), and its forward
