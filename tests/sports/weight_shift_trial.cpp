@@ -120,6 +120,71 @@ Stepping step_in_place(std::uint64_t seed, double seconds,
   return out;
 }
 
+Walking walk_forward(std::uint64_t seed, double seconds, const client::control::SteppingPlan& plan,
+                     const client::control::LegSupportGains& gains) {
+  const std::unique_ptr<SportMatch> m = sport_or_throw("basketball")
+                                            .create({"1v1",
+                                                     seed,
+                                                     seconds + 1,
+                                                     {{"shot_clock_s", 60},
+                                                      {"falls", "stand_up"},
+                                                      {"court", "full"},
+                                                      {"restart_distance", 6}}});
+  const BodyModel model = BodyModel::humanoid(core::HumanoidKind::SmplX);
+  // Each player's walk since its plan (re)started: how far forward, and as it was at its last
+  // lift.
+  struct Walk {
+    double started = 0, forward = 0, forward_at_lift = 0;
+    int lifted = 0;
+    bool down = false;  // fallen, until the match stands it up
+  } walk[2];
+  Walking out;
+  out.forward_each_m.assign(2, 0);
+  const auto tally = [&](int s, bool fell) {
+    const double d = fell ? walk[s].forward_at_lift : walk[s].forward;
+    out.forward_m += d, out.forward_each_m[s] += d;
+  };
+  std::vector<float> obs[2], act[2], poses;
+  const auto root = [&](int s) {  // in the scene's poses: each player's bodies, 7 floats each
+    const std::size_t at = static_cast<std::size_t>(s) * model.size() * 7;
+    return Eigen::Vector2d(poses[at], poses[at + 1]);
+  };
+  const double dt = m->control_dt();
+  const int ticks = static_cast<int>(std::lround(seconds / dt));
+  int tick = 0;
+  for (; tick < ticks; ++tick) {
+    const double t = tick * dt;
+    for (int s = 0; s < 2; ++s) {
+      obs[s].assign(m->obs_size(), 0), act[s].assign(m->action_size(), 0);
+      m->observe(s, obs[s]);
+      Walk& w = walk[s];
+      const int now = plan.steps_lifted(t - w.started);
+      if (now > w.lifted) w.forward_at_lift = w.forward;
+      out.steps += now - w.lifted;
+      w.lifted = now;
+      const Eigen::Vector3d v = client::control::centre_of_mass_velocity(model, obs[s]);
+      w.forward += v.x() * dt;
+      client::control::hold_on_legs(model, model.pose_from_observation(obs[s]), v,
+                                    plan.at(t - w.started), act[s], gains);
+    }
+    m->step({std::span<const float>(act[0]), std::span<const float>(act[1])});
+    bool restart = false;
+    for (const auto& e : m->outcome().info.value("events", nlohmann::json::array())) {
+      const std::string call = e.value("call", "");
+      const int s = e.value("slot", 0);
+      if (call == "fall") ++out.falls, tally(s, true), walk[s].down = true;
+      if (call == "stood_up") walk[s] = Walk{t + dt, 0, 0, 0, false};
+      restart |= call == "restart";
+    }
+    m->scene_poses(poses);
+    if (restart || (root(0) - root(1)).norm() < 1.5) break;
+  }
+  for (int s = 0; s < 2; ++s)
+    if (!walk[s].down) tally(s, false);
+  out.minutes = 2 * tick * dt / 60;  // a walk cut short counts up to the tick that cut it
+  return out;
+}
+
 std::string describe(const ShiftTrial& t) {
   char line[200];
   std::snprintf(line, sizeof line,

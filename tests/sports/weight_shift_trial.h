@@ -47,4 +47,20 @@ Stepping step_in_place(std::uint64_t seed, double seconds,
                        const client::control::SteppingPlan& plan,
                        const client::control::LegSupportGains& gains);
 
+struct Walking {
+  int falls = 0;         // of both players
+  int steps = 0;         // feet lifted, both players
+  double minutes = 0;    // player-minutes (the trial's time, falls and all)
+  double forward_m = 0;  // both players' centre of mass carried forward along their heading,
+                         // a walk that fell counted up to its last lift
+  std::vector<double> forward_each_m;  // each player's, slot 0 then 1
+};
+
+// Both SMPL-X players of a full-court basketball 1v1 of `seed` (6 m apart, facing each other)
+// walk by `plan` on `gains` for `seconds`, or until a restart moves them (the dropped check ball
+// rolling out) or they come within 1.5 m; a fallen player is stood up by the match and starts
+// its plan again.
+Walking walk_forward(std::uint64_t seed, double seconds, const client::control::SteppingPlan& plan,
+                     const client::control::LegSupportGains& gains);
+
 }  // namespace olympics::sports

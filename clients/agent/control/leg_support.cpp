@@ -70,15 +70,22 @@ void hold_on_legs(const BodyModel& model, const BodyPose& pose, const Eigen::Vec
   const double correction =
       (1 - (1 - g.both_feet_scale) * both) *
       (g.side_p * (com.y() - side) + g.side_d * (v.y() - support.left_share_rate * across));
-  const double forward_push = g.forward_p * (com.x() - forward) + g.forward_d * v.x();
+  // Each ankle's planned place forward from the share's point between them, and the centre of
+  // mass's planned velocity forward: the share's rate times the feet's stagger.
+  const double planned_x[2] = {share[1] * support.left_ahead, -share[0] * support.left_ahead};
+  const double forward_push = g.forward_p * (com.x() - forward) +
+                              g.forward_d * (v.x() - support.left_share_rate * support.left_ahead);
   const Eigen::Vector3d up = pose.rotation[0].col(2);
   const double weight = model.total_mass() * kGravity;
   for (int leg = 0; leg < 2; ++leg) {
     const double w = support.half_and_half ? 0.5 : share[leg];
     // Where this foot's share of the ground's force acts: under the centre of mass forward (the
-    // ankle's pitch holds the body's lean), and sideways as far off the foot's point as the
-    // centre of mass is off its place (the shares' forces then hold the body where it is).
-    const Eigen::Vector3d on_ground(com.x(), feet[leg].y() + com.y() - side, feet[leg].z());
+    // ankle's pitch holds the body's lean; with one foot ahead, as far ahead of it as the foot is
+    // planned), and sideways as far off the foot's point as the centre of mass is off its place
+    // (the shares' forces then hold the body where it is).
+    const Eigen::Vector3d on_ground(com.x() + planned_x[leg], feet[leg].y() + com.y() - side,
+                                    feet[leg].z());
+    const double tilt = std::asin(std::clamp(planned_x[leg] / leg_length(model, leg), -0.5, 0.5));
     // The free foot raised by flexing hip and knee alike (the shank stays vertical).
     const double thigh_and_shank =
         model.body(kHip[leg] + 1).offset.norm() + model.body(kHip[leg] + 2).offset.norm();
@@ -95,12 +102,12 @@ void hold_on_legs(const BodyModel& model, const BodyPose& pose, const Eigen::Vec
         // On one foot the loaded hip levels the pelvis and the free one hangs its leg; the signs
         // are the measured ones (the other signs fell on every tuning seed).
         const double level = (1 - both) * (w * g.stance_level - (1 - w) * g.swing_level);
-        angles = {carried + both * correction + level * up.y(), -lift, 0};
+        angles = {carried + both * correction + level * up.y(), -lift - tilt, 0};
       } else if (k == 1) {
         angles = {0, 2 * lift, 0};
       } else {
         torque.y() += w * forward_push;
-        angles = {-(carried + correction), -lift, 0};
+        angles = {-(carried + correction), tilt - lift, 0};
       }
       const Eigen::Vector3d& kp = model.body(joint).kp;
       const Eigen::Vector3d offset(torque.x() / kp.x(), torque.y() / kp.y(), torque.z() / kp.z());

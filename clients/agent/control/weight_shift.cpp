@@ -45,7 +45,26 @@ LegSupport SteppingPlan::at(double t) const {
   const double up = (u - across - loaded_s) / lift_s;
   const double down = (u - across - loaded_s - lift_s - hold_s) / lift_s;
   s.lift[onto_left ? 1 : 0] = lift_m * (minimum_jerk(up) - minimum_jerk(down));
+  // The free foot's place ahead of the stance ankle: from behind it (beside it at the first
+  // step) to reach_m ahead over the lift and hold, then kept.
+  const double behind = later ? -reach_m : 0.0;
+  const double free_ahead =
+      behind + (reach_m - behind) * minimum_jerk((u - across - loaded_s) / (lift_s + hold_s));
+  s.left_ahead = onto_left ? -free_ahead : free_ahead;
   return s;
+}
+
+SteppingPlan slow_walk_plan() {
+  SteppingPlan plan;
+  plan.reach_m = 0.05;
+  return plan;
+}
+
+LegSupportGains slow_walk_gains() {
+  LegSupportGains gains;
+  gains.ahead = 0;
+  gains.forward_d = 200;
+  return gains;
 }
 
 }  // namespace olympics::client::control
