@@ -272,6 +272,7 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
       g.position = seen_from.to_heading_point(face) - root_velocity * ahead +
                    racket_play::face_aim_bias(play, met, pose.position[kRShoulder]);
       g.axis = court.to_heading_vector(normal);
+      g.axis_either_sign = !play.front_face_only;
       if (!stroke_->pivot && play.draw_s > 0) {
         // Drawn back only in time for the swing: until then the face waits at the ready point
         // (an arm held back across the body while the legs step topples the player).
