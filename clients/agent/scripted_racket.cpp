@@ -424,8 +424,12 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
       if (p.x() < 0) partner = p;
     }
   const Eigen::Vector3d ball = court.point(vec3(o, at.ball));
-  // A new point: the ball put back at the feed, further than it flies in a tick.
-  const bool new_point = (ball - last_ball_).norm() > 1.0;
+  // A new point: the ball put back at the feed, further than it flies in a tick. At the table
+  // a ball left lying in or by the net at a point's end is put back less than 1 m away (the feed
+  // starts over the net), and the new point went unseen: the stroke committed then ran on into
+  // the feed and let it go (1v1 seed 1, the fifth point, with the front face); a table-tennis
+  // ball flies under 0.35 m a tick.
+  const bool new_point = (ball - last_ball_).norm() > (sport_->game.on_table ? 0.4 : 1.0);
   last_ball_ = ball;
   const bool team_coming = o[at.coming] > 0.5;
   bool coming = team_coming && o[at.struck] < 0.5;  // to me, not struck yet
