@@ -272,6 +272,9 @@ void ScriptedRacketPolicy::drive_arm(const CourtFrame& court, const BodyPose& po
       g.position = seen_from.to_heading_point(face) - root_velocity * ahead +
                    racket_play::face_aim_bias(play, met, pose.position[kRShoulder]);
       g.axis = court.to_heading_vector(normal);
+      // Doubles keeps either face (not measured there; its partners-apart test came nearer its
+      // bar: close ticks 2.8% -> 5.3% against 5%).
+      g.axis_either_sign = !play.front_face_only || doubles_;
       if (!stroke_->pivot && play.draw_s > 0) {
         // Drawn back only in time for the swing: until then the face waits at the ready point
         // (an arm held back across the body while the legs step topples the player).
@@ -421,8 +424,12 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
       if (p.x() < 0) partner = p;
     }
   const Eigen::Vector3d ball = court.point(vec3(o, at.ball));
-  // A new point: the ball put back at the feed, further than it flies in a tick.
-  const bool new_point = (ball - last_ball_).norm() > 1.0;
+  // A new point: the ball put back at the feed, further than it flies in a tick. At the table
+  // a ball left lying in or by the net at a point's end is put back less than 1 m away (the feed
+  // starts over the net), and the new point went unseen: the stroke committed then ran on into
+  // the feed and let it go (1v1 seed 1, the fifth point, with the front face); a table-tennis
+  // ball flies under 0.35 m a tick.
+  const bool new_point = (ball - last_ball_).norm() > (sport_->game.on_table ? 0.4 : 1.0);
   last_ball_ = ball;
   const bool team_coming = o[at.coming] > 0.5;
   bool coming = team_coming && o[at.struck] < 0.5;  // to me, not struck yet

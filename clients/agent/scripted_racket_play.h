@@ -58,6 +58,11 @@ struct Play {
   // arm's steady miss; only for balls met between the racket shoulder's line and the root's
   // (face_aim_bias below).
   Eigen::Vector3d face_aim_bias = Eigen::Vector3d::Zero();
+  // The arm meets every ball with the face's front side (the one whose normal is the hand's z):
+  // a ball across the body is met with the arm reaching across, the wrist as on the forehand.
+  // false: either side, as the inverse kinematics finds nearer (a two-sided face). 1v1 and
+  // ball return only: doubles keeps either side (scripted_racket.cpp).
+  bool front_face_only = false;
   double walk_speed = 0.6;       // m/s the legs cover, roughly, toward a ball out of reach
   double balance_ahead = -0.03;  // the centre of mass held this far ahead of the ankles
   double horizon_s = 0;          // how far ahead the ball is predicted
