@@ -77,6 +77,9 @@ void hold_on_legs(const BodyModel& model, const BodyPose& pose, const Eigen::Vec
                               g.forward_d * (v.x() - support.left_share_rate * support.left_ahead);
   const Eigen::Vector3d up = pose.rotation[0].col(2);
   const double weight = model.total_mass() * kGravity;
+  const auto hip_yaw = [&](int hip) {  // where the hip is about its yaw axis
+    return euler_xyz(pose.rotation[0].transpose() * pose.rotation[hip]).z();
+  };
   for (int leg = 0; leg < 2; ++leg) {
     const double w = support.half_and_half ? 0.5 : share[leg];
     // Where this foot's share of the ground's force acts: under the centre of mass forward (the
@@ -103,6 +106,10 @@ void hold_on_legs(const BodyModel& model, const BodyPose& pose, const Eigen::Vec
         // are the measured ones (the other signs fell on every tuning seed).
         const double level = (1 - both) * (w * g.stance_level - (1 - w) * g.swing_level);
         angles = {carried + both * correction + level * up.y(), -lift - tilt, 0};
+        // A leg (almost) unloaded: its hip's yaw target follows where the hip is, so the leg does
+        // not twist the foot it puts down (and the body on the other foot) back to the pelvis's
+        // heading; its stiffness returns as the leg takes the weight.
+        if (w < g.free_hip_yaw_below) angles.z() = (1 - w / g.free_hip_yaw_below) * hip_yaw(joint);
       } else if (k == 1) {
         angles = {0, 2 * lift, 0};
       } else {

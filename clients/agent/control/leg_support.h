@@ -46,6 +46,12 @@ struct LegSupportGains {
   double ahead = 0.03;           // m: the centre of mass held this far ahead of the loaded ankles
   double foot_point = 0.3;       // where on a foot it is held: 0 its ankle, 1 its centre
   double compensation = 1.0;     // scale of the planned loads' torques
+  // Below this share of the weight a leg's hip has no yaw stiffness: its yaw target is where the
+  // hip is. 0: never (the hip's yaw held at 0, the pelvis's heading). Held, the free leg's hip
+  // twists the foot it just put down, and the body with it, turning 0.1-0.3 rad at each step;
+  // 10 cm steps fell 2.0 times a minute held, 0.23 free below 0.15 (docs/basketball.md, "Why
+  // the body turned").
+  double free_hip_yaw_below = 0;
 };
 
 struct LegSupport {

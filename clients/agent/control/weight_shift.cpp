@@ -67,4 +67,16 @@ LegSupportGains slow_walk_gains() {
   return gains;
 }
 
+SteppingPlan stride_walk_plan() {
+  SteppingPlan plan = slow_walk_plan();
+  plan.reach_m = 0.10;
+  return plan;
+}
+
+LegSupportGains stride_walk_gains() {
+  LegSupportGains gains = slow_walk_gains();
+  gains.free_hip_yaw_below = 0.15;
+  return gains;
+}
+
 }  // namespace olympics::client::control
