@@ -42,14 +42,15 @@ LegSupport SteppingPlan::at(double t) const {
   const double from = later ? (onto_left ? 0.0 : 1.0) : 0.5, to = onto_left ? 1.0 : 0.0;
   s.left_share = from + (to - from) * minimum_jerk(u / across);
   s.left_share_rate = (to - from) * minimum_jerk_rate(u / across, across);
-  const double up = (u - across - loaded_s) / lift_s;
-  const double down = (u - across - loaded_s - lift_s - hold_s) / lift_s;
+  const double since_lift = u - across - loaded_s;  // < 0 while the weight crosses and settles
+  const double up = since_lift / lift_s;
+  const double down = (since_lift - lift_s - hold_s) / lift_s;
   s.lift[onto_left ? 1 : 0] = lift_m * (minimum_jerk(up) - minimum_jerk(down));
   // The free foot's place ahead of the stance ankle: from behind it (beside it at the first
   // step) to reach_m ahead over the lift and hold, then kept.
   const double behind = later ? -reach_m : 0.0;
   const double free_ahead =
-      behind + (reach_m - behind) * minimum_jerk((u - across - loaded_s) / (lift_s + hold_s));
+      behind + (reach_m - behind) * minimum_jerk(since_lift / (lift_s + hold_s));
   s.left_ahead = onto_left ? -free_ahead : free_ahead;
   return s;
 }
