@@ -94,7 +94,6 @@ void ScriptedRacketPolicy::start(const MatchInfo& match) {
   stroke_.reset();
   sport_->contact_arm.clear();
   since_stroke_s_ = 1e9;
-  settled_since_stroke_ = true;
   missed_ = false;
   sport_->arm.reset();
 }
@@ -460,14 +459,8 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
   } else if (stroke_) {
     stroke_.reset();
     since_stroke_s_ = 0;
-    settled_since_stroke_ = false;
   }
   since_stroke_s_ += control_dt_;
-  // After a stroke the legs walk home only once the swing's sway has died down (latched: a walk
-  // under way is faster than that).
-  if (since_stroke_s_ > play.home_after_s &&
-      root_velocity_.head<2>().norm() < play.home_below_speed)
-    settled_since_stroke_ = true;
 
   // Legs: stand while the stroke is within reach; else walk to where the ball will be, or home.
   Eigen::Vector3d walk(0, 0, 0);  // court frame, from the root
@@ -478,8 +471,7 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
     if (!stroke_->reachable && play.chase_slack > 0 &&
         walk.norm() > play.walk_speed * std::max(0.0, stroke_->time_to_hit) + play.chase_slack)
       walk.setZero();
-  } else if (!coming && since_stroke_s_ > play.home_after_s &&
-             (settled_since_stroke_ || play.home_below_speed <= 0)) {
+  } else if (!coming && since_stroke_s_ > play.home_after_s) {
     // Home: the middle of the own half's back, or in doubles the own side of it.
     const double home_y =
         doubles_ ? (court.root.y() >= partner.y() ? 1 : -1) * sport_->game.partner_y : 0;

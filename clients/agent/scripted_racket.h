@@ -97,8 +97,6 @@ class ScriptedRacketPolicy : public Policy {
   std::optional<Stroke> stroke_;
   Eigen::Vector3d root_velocity_ = Eigen::Vector3d::Zero();  // heading frame, this tick
   double since_stroke_s_ = 1e9;                              // time since the last planned contact
-  // Since its last stroke the body has been slow enough to walk home (Play::home_below_speed).
-  bool settled_since_stroke_ = true;
 };
 
 }  // namespace olympics::client

@@ -174,11 +174,6 @@ Play tennis_play() {
   // seeds 1-8, falls 23 in 20.5 min -> 7 in 21.0 min, points with a stroke 22.6% -> 19.0% (issue
   // 29, tennis falls in 1v1, second round; docs/racket-sports.md).
   p.swing_once_settled = true;
-  // Of the 10 falls traced in 1v1 on tuning seeds 1-16, 3 came 0.9-2.1 s after the player's own
-  // stroke, walking home while the body still swayed from the swing: sideways it ran away to
-  // 1.1-2.1 m/s. It now stands until the body is slower than 0.3 m/s, then walks home (issue 29,
-  // tennis falls in 1v1, fourth round; docs/racket-sports.md).
-  p.home_below_speed = 0.3;
   return p;
 }
 

@@ -45,10 +45,8 @@ struct Play {
   double commit_s = 0.2;           // this close to the ball, the stroke is no longer re-planned
   double settle_s = 0.5;           // the legs stop walking this long before a reachable ball
   double doubles_step_back = 0.7;  // m further back than home while the partner plays
-  // After its stroke the player stands this long (s) before it walks home...
+  // After its stroke the player stands this long (s) before it walks home.
   double home_after_s = 0.4;
-  // ...and until the body is slower than this (m/s, the root's ground speed), once; 0: no wait.
-  double home_below_speed = 0;
   // Table-tennis doubles serve: the face and its swing turned this much further across (left,
   // radians) than planned. Swung across the body toward the diagonal, the arm sends the ball about
   // 11 degrees right of the planned line (tuning seeds 1-4: 25.5 degrees asked, 14.7 delivered).
