@@ -189,9 +189,10 @@ void ScriptedRacketPolicy::plan(std::span<const float> o, const CourtFrame& cour
   if (best) {
     // The swing's line: level, toward where the ball should go (measured: more balls met than
     // swung along the face's normal, which draws the face down under a rising ball).
-    const Eigen::Vector2d toward = (play.aim - best->position.head<2>()).normalized();
+    const Eigen::Vector2d aim = doubles_ && play.doubles_aim ? *play.doubles_aim : play.aim;
+    const Eigen::Vector2d toward = (aim - best->position.head<2>()).normalized();
     const Eigen::Vector3d swing(toward.x(), toward.y(), 0);
-    const auto shot = control::plan_shot(sport_->path, best->position, best->velocity, play.aim,
+    const auto shot = control::plan_shot(sport_->path, best->position, best->velocity, aim,
                                          play.net_margin, swing);
     if (shot) {
       stroke_ = Stroke{best->time,       best->position, shot->face.normal, shot->face.direction,

@@ -23,8 +23,11 @@ struct Play {
   double below = 0.5, above = 0.45;  // heights about the sweet spot the arm meets balls at, m
   double home_x = 0;                 // court x the player returns to between balls
   Eigen::Vector2d aim;               // where strokes should land (court frame, far half)
-  double net_margin = 0;             // m above the net
-  double reach_fraction = 0.9;       // of the arm's full reach
+  // Where doubles strokes land, if not at aim (table tennis: 1v1 and ball return aim shorter,
+  // doubles was not measured with it).
+  std::optional<Eigen::Vector2d> doubles_aim;
+  double net_margin = 0;        // m above the net
+  double reach_fraction = 0.9;  // of the arm's full reach
   // How much further the trunk's lean and turn take the shoulder; 0: the arm alone reaches (a
   // heavy racket swung from a leaning trunk topples the player).
   double trunk_reach = 0;

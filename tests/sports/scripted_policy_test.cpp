@@ -427,5 +427,27 @@ TEST(ScriptedRacketPolicy, MeetsBallsAcrossTheBodyWithThePaddlesFrontFace) {
   EXPECT_LE(no_stroke, 0.1 * points) << "either face allowed: 8 of 49";
 }
 
+// Table-tennis returns are aimed 0.45 m past the net, not 0.6 (issue 29, the passing balls): a
+// receiver still at the table's end, where it met its last short ball, could not meet a ball that
+// landed 0.6-1.0 m past the net in front of it (no contact point in front of the body clears the
+// table there), and the ball passed it; balls landing 0.4-0.6 m past the net were met. Over 1v1
+// seeds 41-46 (tuning seeds of that round), points that ended with the ball passing its receiver:
+// measured 9 of 119 (aimed 0.6 m past the net: 34 of 111).
+TEST(ScriptedRacketPolicy, FewerTableTennisBallsPassTheReceiver) {
+  int points = 0, passed = 0;
+  for (std::uint64_t seed = 41; seed <= 46; ++seed) {
+    ScriptedRacketPlay play("table_tennis", {"1v1", seed, 0.0, {}});
+    while (!play.over()) {
+      for (const auto& ev : play.tick()) {
+        if (ev.value("call", "") != "point") continue;
+        ++points, passed += ev.value("reason", "") == "missed";
+      }
+    }
+  }
+  std::printf("%d points, %d ended with the ball passing the receiver\n", points, passed);
+  ASSERT_GE(points, 100);
+  EXPECT_LT(passed, 0.15 * points) << "aimed 0.6 m past the net: 34 of 111";
+}
+
 }  // namespace
 }  // namespace olympics::client
