@@ -84,6 +84,13 @@ class Evaluate(unittest.TestCase):
         self.assertGreater(latest["worse"], 0)
         self.assertEqual(latest["better"], 0)
         self.assertLess(latest["mean_95"][1], 0, "returning no ball is not within noise here")
+        # Each test match's score per player, in seed order, adds up to the tables' figures.
+        per_match = first["test_episodes"]
+        self.assertEqual(set(per_match), set(test))
+        for name, played in per_match.items():
+            self.assertEqual([e["seed"] for e in played], [*range(101, 107), *range(201, 207)])
+            self.assertEqual(sum(e["score"] for e in played), test[name]["score"], name)
+        self.assertTrue(any(e["score"] > 0 for e in per_match["scripted"]))
         self.assertEqual(self.evaluate(run), first, "a rerun gave other tables")
         with open(os.path.join(run, "evaluation.md")) as f:
             self.assertIn("| best: v00002 | 12 |", f.read())

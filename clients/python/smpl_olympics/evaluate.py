@@ -14,7 +14,8 @@ factor of five between snapshots 100 iterations apart (docs/training.md).
 
 Deterministic: a match is its seed and the actions, and every player here acts from its
 observations alone (restarted for each match), so the tables are the same on every rerun and
-every machine. Writes evaluation.md (the tables) and evaluation.json into the run folder. The
+every machine. Writes evaluation.md (the tables) and evaluation.json (the tables' figures, and
+each test match's seed and score per player, "test_episodes") into the run folder. The
 opponent of a match mode is the run's --opponent when it is a policy the agent plays, else the
 scripted player. Needs no server running: without --lcm-url each player's matches run on a
 private server.
@@ -192,6 +193,12 @@ def paired_difference(results, baseline):
             "better": int(np.sum(diffs > 0)), "worse": int(np.sum(diffs < 0))}
 
 
+def episodes(results):
+    """Each match's seed and the learning team's score, in seed order: what a reader needs for
+    figures over a part of the test seeds (one range of several) or for another pairing."""
+    return [{"seed": r["seed"], "score": r["scores"][0]} for r in results]
+
+
 def paired_table(rows):
     lines = ["| player | matches | score minus the scripted player's, per match (95% interval) | z "
              "| matches better | matches worse |", "|---|---|---|---|---|---|"]
@@ -266,7 +273,9 @@ def main(argv=None):
         json.dump({"validation_seeds": [[r.start, r.stop - 1] for r in val],
                    "test_seeds": [[r.start, r.stop - 1] for r in test], "best": best,
                    "validation": {f"v{v:05d}": s for v, s in chosen.items()},
-                   "test": dict(measured), "test_against_scripted": dict(paired)}, f, indent=1)
+                   "test": dict(measured), "test_against_scripted": dict(paired),
+                   "test_episodes": {name: episodes(results[name]) for name, _ in players}},
+                  f, indent=1)
     print("\n" + report + f"\nchosen: {best_path}")
 
 
