@@ -44,7 +44,15 @@ constexpr double kReplantSpeed = 0.35;
 // about the centre of mass, it faced, planted and punched much more, but fell 6 times a minute.
 constexpr double kCentreOfMassPlacement = 0.5;
 constexpr double kPlantedLeg_m = 0.74;  // hip to ankle planted: knees bent, centre of mass low
-constexpr double kUpright = 2.0;        // hip correction per radian of pelvis tilt
+// Stepping, the stance leg is held as straight as the leg solver allows, 0.773 m hip to ankle
+// (the stepping controller's default 0.77; the SMPL leg gives another 2 cm under the body's
+// weight, docs/control.md): a boxer jolted off its plant catches itself on it. Jolted planted at
+// 0.4-0.6 m/s (tests/sports/catch_step_test.cpp, 90 runs) it fell in 14, against 17 at 0.77 m;
+// the more bent, the more falls (0.76: 21, 0.74: 28; in bouts at 0.74, ten times as many).
+// Tuning seeds 1-60: 0.298 -> 0.213 falls a minute, scoring punches 14 -> 13
+// (docs/combat-sports.md, fourteenth round).
+constexpr double kSteppingLeg_m = 0.773;
+constexpr double kUpright = 2.0;                // hip correction per radian of pelvis tilt
 constexpr double kAnkleP = 3.0, kAnkleD = 2.0;  // ankle per m of centre of mass off, per m/s
 constexpr double kGuardElbow = 1.8;             // rad
 constexpr double kGuardForward = 0.6;           // the guard's upper arm: forward, out and down
@@ -133,6 +141,7 @@ StepGains boxing_step_gains() {
   g.max_speed = kMaxSpeed;
   g.balance = {2.0, 2.0, 0.0, 2.0};  // standing in the rest, gloves up
   g.centre_of_mass_placement = kCentreOfMassPlacement;
+  g.leg_length = kSteppingLeg_m;
   return g;
 }
 
