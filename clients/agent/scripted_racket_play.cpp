@@ -182,6 +182,13 @@ Play tennis_play() {
   // seeds 1-8, falls 23 in 20.5 min -> 7 in 21.0 min, points with a stroke 22.6% -> 19.0% (issue
   // 29, tennis falls in 1v1, second round; docs/racket-sports.md).
   p.swing_once_settled = true;
+  // At about 3 of 4 point starts the legs were still in a step from the point before, run on
+  // from where the feet had been, while the match had put the body back standing at its mark.
+  // Of 11 falls traced in 1v1 on tuning seeds 1-8 and 17-24, 7 were the fed player's 0.8-1.5 s
+  // into the point, the body surging forward and the right foot lunging 0.6-0.8 m ahead. Legs
+  // started afresh at each point: the first 7 of those matches, falls 7 in 17.3 min -> 4 in
+  // 19.4 min (issue 29, tennis falls in 1v1, fifth round; docs/racket-sports.md).
+  p.fresh_legs_at_new_point = true;
   return p;
 }
 
