@@ -60,6 +60,8 @@ class ScriptedRacketPolicy : public Policy {
     bool serve = false;  // the serve's (its swing holds the turn's load, the free arm against it)
   };
   const std::optional<Stroke>& stroke() const { return stroke_; }
+  // The legs (none before the first act()), for tests.
+  const std::optional<StepController>& legs() const { return legs_; }
 
  private:
   struct Sport;

@@ -182,6 +182,17 @@ Play tennis_play() {
   // seeds 1-8, falls 23 in 20.5 min -> 7 in 21.0 min, points with a stroke 22.6% -> 19.0% (issue
   // 29, tennis falls in 1v1, second round; docs/racket-sports.md).
   p.swing_once_settled = true;
+  // At half the point starts the legs were still in a step from the point before, run on from
+  // where the feet had been, while the match had put the body back standing at its mark (18 of
+  // 36 in the first 10 points of 1v1 seeds 1-2; the body jolted: root speed on the point's first
+  // tick, median 0.18 m/s, 0.08 afresh).
+  // Of 11 falls traced in 1v1 on tuning seeds 1-8 and 17-24, 8 were a forward lunge (6 of them
+  // the fed player's, 0.8-1.5 s into the point): the body surging forward, the right foot swung
+  // 0.4-0.8 m ahead, a knee down. Legs started afresh, falls 11 in 39.5 min -> 7 in 43.1 min;
+  // unseen seeds 210001-210016, 22 in 61.9 min -> 11 in 48.0 min (0.36 -> 0.23 a minute, z 1.2),
+  // strokes per point 0.179 -> 0.196 (issue 29, tennis falls in 1v1, fifth round;
+  // docs/racket-sports.md).
+  p.fresh_legs_at_new_point = true;
   return p;
 }
 

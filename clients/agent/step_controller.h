@@ -112,6 +112,8 @@ class StepController {
            std::span<float> action);
 
   bool stepping() const { return stepping_; }
+  // How long the step under way has run, this tick's act() included (s).
+  double step_time_s() const { return phase_s_; }
 
   // The swing foot's clearance from the next step on (stepping over something low).
   void set_lift(double metres) { gains_.lift = metres; }
