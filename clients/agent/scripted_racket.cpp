@@ -448,7 +448,10 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
   }
   if (!coming || new_point) missed_ = false;
   if (new_point && play.forget_stroke_at_new_point) stroke_.reset();
-  if (new_point && play.fresh_legs_at_new_point) legs_.emplace(play.legs, control_dt_);
+  // A match puts the players back at their marks for each point; ball return does not (its
+  // player walks on from where the last ball left it), so there the legs carry on.
+  const bool put_back = !others_.empty();
+  if (new_point && put_back && play.fresh_legs_at_new_point) legs_.emplace(play.legs, control_dt_);
   if (coming && stroke_ && stroke_->reachable &&
       stroke_->time_to_hit - control_dt_ < play.commit_s) {
     // Committed: the swing is under way; the ball is met where it was planned.

@@ -82,9 +82,10 @@ struct Play {
   // player then plans nothing for the feed. false: kept (tennis, where let_go_missed is off and
   // no feed went unplanned: 0 of 120 on tuning seeds 1-4).
   bool forget_stroke_at_new_point = false;
-  // A new point starts the legs afresh (standing, or a step begun from the feet as they are):
-  // the match puts every player back at its mark, standing still, where a step under way when
-  // the last point ended would otherwise run on from where the feet were before.
+  // A new point of a match starts the legs afresh (standing, or a step begun from the feet as
+  // they are): the match puts every player back at its mark, standing still, where a step under
+  // way when the last point ended would otherwise run on from where the feet were before. Not in
+  // ball return, whose player is not put back between balls.
   bool fresh_legs_at_new_point = false;
   // The swing as an arc about the vertical through the shoulder (the arm turning as one, the
   // face at a constant distance), at the least of `arc_speeds` that returns the ball in.
