@@ -153,6 +153,8 @@ void ScriptedRacketPolicy::plan(std::span<const float> o, const CourtFrame& cour
     if (stroke_) cost += 0.5 * std::abs(s.time - (stroke_->time_to_hit - control_dt_));
     if (cost < best_cost) best_cost = cost, best = &s, best_reachable = reachable;
   }
+  // Where the stroke should land (doubles may aim elsewhere than singles and ball return).
+  const Eigen::Vector2d aim = doubles_ && play.doubles_aim ? *play.doubles_aim : play.aim;
   if (best && play.max_back_angle > 0 && !play.arc_speeds.empty()) {
     // The arc: about the vertical through the shoulder where the body will be at contact; a
     // forehand (turning left) right of the shoulder, a backhand left of it.
@@ -165,7 +167,7 @@ void ScriptedRacketPolicy::plan(std::span<const float> o, const CourtFrame& cour
       // ball further: a search over the normals at every speed costs too much of the tick).
       auto shot_at = [&](double speed) {
         return control::plan_shot_at_speed(sport_->path, best->position, best->velocity,
-                                           speed * *tangent, play.aim, play.net_margin, 0.5);
+                                           speed * *tangent, aim, play.net_margin, 0.5);
       };
       std::optional<control::ShotPlan> shot;
       int lo = -1, hi = static_cast<int>(play.arc_speeds.size()) - 1;
@@ -189,7 +191,6 @@ void ScriptedRacketPolicy::plan(std::span<const float> o, const CourtFrame& cour
   if (best) {
     // The swing's line: level, toward where the ball should go (measured: more balls met than
     // swung along the face's normal, which draws the face down under a rising ball).
-    const Eigen::Vector2d aim = doubles_ && play.doubles_aim ? *play.doubles_aim : play.aim;
     const Eigen::Vector2d toward = (aim - best->position.head<2>()).normalized();
     const Eigen::Vector3d swing(toward.x(), toward.y(), 0);
     const auto shot = control::plan_shot(sport_->path, best->position, best->velocity, aim,
