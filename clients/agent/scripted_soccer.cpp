@@ -28,11 +28,11 @@ constexpr double kDownBelow_m = -0.4;  // a teammate's root this far below mine:
 constexpr double kShootFrom_m = 11.0;
 // In 2v2 a ball up to kShootPressedFrom_m out is kicked too while an opponent (not down) is within
 // kPressedBy_m of it: the opponent keeping off 3 m away took the dribbler's pushes (2v2 tuning
-// seeds 1-30: goals 39 (7 own) -> 51 (4 own), falls 171 -> 204; unseen seeds 220001-220048: 2.97
-// -> 4.32 goals per 10 minutes, falls 0.353 -> 0.448 per player-minute, the kick's own falls;
-// docs/soccer.md, "shooting from 15 m when pressed" and issue 30's h-soccer9 round). Making
-// those kicks fall less cost their goals (a faster or waited weight shift onto the planted foot,
-// a slower ball, a slower start: 2v2 seeds 1-11).
+// seeds 1-30: goals 39 (7 own) -> 51 (4 own), falls 171 -> 204; unseen seeds 220001-220048 and
+// 230001-230048: 3.02 -> 4.22 goals per 10 minutes, but falls 0.369 -> 0.434 per player-minute,
+// the kick's own; docs/soccer.md, "shooting from 15 m when pressed" and "the pressed 15 m shot
+// again"). Making those kicks fall less cost their goals (a faster or waited weight shift onto
+// the planted foot, a slower ball, a slower start: 2v2 seeds 1-11).
 constexpr double kShootPressedFrom_m = 15.0;
 constexpr double kPressedBy_m = 4.0;
 // An opponent has the ball: I stay this far from the ball, and at least kKeepOffHolder_m from
