@@ -7,7 +7,8 @@
 //   ball: its swinging feet knock it on, a dribble that ends in a shot when the feet meet the
 //   ball at speed. It aims at the goal's middle, or with a keeper in the goal (or the 2v2 guard in
 //   front of it), inside the post away from it. In a match a ball within 11 m of the goal is kicked
-//   (SoccerKick), not dribbled, once it lies on the kicking foot's side of the kicker's line;
+//   (SoccerKick), not dribbled, once it lies on the kicking foot's side of the kicker's line (in
+//   2v2 within 15 m too while an opponent not down is within 4 m of the ball);
 // - in a match a player keeps off a ball an opponent is nearer (3 m, goal-side, beside the
 //   opponent's way to the goal): most falls came from players walking into each other, and
 //   from nearer, the holder's pushes gave the ball straight to the one keeping off;
