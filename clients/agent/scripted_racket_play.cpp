@@ -105,6 +105,19 @@ Play table_play() {
   // point 0.379 -> 0.328, falls 2 -> 1. A backhand swing (the line turned 0.6 rad right, drawn
   // back from the left) with either face: seeds 1-4, 1.81 -> 1.53 (docs/racket-sports.md).
   p.front_face_only = true;
+  // A new point starts the legs afresh (Play::fresh_legs_at_new_point), stepping at once, the
+  // trailing foot first. Before, a step under way when the last point ended ran on at 97% of
+  // point starts (1v1 tuning seeds 61-80), the swing foot yanked up mid-step from the feet the
+  // match had just put back. Started afresh and standing, the body toppled forward (this
+  // standing balance) at about 0.2 m/s until a catch step 0.45 s in, and the walk home (2 m
+  // back -> 1.8) is under the walker's 0.3 m start distance; stepping at once by the lead foot,
+  // the fed player sidestepped the feed's full 0.25 m and struck it still moving (points lost on
+  // the feed's stroke, into the net, short or out: main 16%, 33%). The trailing foot first, it
+  // meets the feed about where it stands: 5%; strokes a point 3.62 -> 4.22 (11 matches; issue
+  // 29, the legs at a point's start; docs/racket-sports.md).
+  p.fresh_legs_at_new_point = true;
+  p.fresh_legs_step_at_once = true;
+  p.doubles_fresh_legs = false;
   return p;
 }
 

@@ -124,13 +124,15 @@ void StepController::act(std::span<const float> o, const Eigen::Vector2d& target
   const double distance = target.norm();
 
   const double ground = -root_height(o);  // the floor, root-relative
+  const bool at_once = step_at_once_;
+  step_at_once_ = false;
   if (!stepping_) {
     const bool must_turn = g.turn_start > 0 && std::abs(turn) > g.turn_start;
     const bool losing = losing_balance(o);
-    if (distance < g.start_m && !must_turn && !losing) return stand(o, a);
+    if (distance < (at_once ? g.arrive_m : g.start_m) && !must_turn && !losing) return stand(o, a);
     stepping_ = true;
     catching_ = losing && g.catch_step_s > 0;
-    bool left = target.y() > 0;
+    bool left = (target.y() > 0) != at_once;
     if (catching_ && g.catch_on_the_falling_side) {
       const double feet_y = 0.5 * (body_position(o, kLAnkle).y() + body_position(o, kRAnkle).y());
       left = capture_point(o, 0).y() > feet_y;

@@ -115,6 +115,12 @@ class StepController {
   // How long the step under way has run, this tick's act() included (s).
   double step_time_s() const { return phase_s_; }
 
+  // Standing, the next act() steps toward a target as near as `arrive_m` (where a walk stops),
+  // not only beyond `start_m`, and the first step is the foot away from the target's side (the
+  // trailing foot). For legs started afresh where a body was put back standing, away from where
+  // it is sent (a racket match's marks at each point's start).
+  void step_at_once_trailing_foot_first() { step_at_once_ = true; }
+
   // The swing foot's clearance from the next step on (stepping over something low).
   void set_lift(double metres) { gains_.lift = metres; }
 
@@ -143,8 +149,9 @@ class StepController {
   double control_dt_;
   bool stepping_ = false;
   bool left_swings_ = true;
-  bool catching_ = false;  // this step is the catch step (StepGains::catch_step_s)
-  double phase_s_ = 0;     // time into the current step
+  bool catching_ = false;      // this step is the catch step (StepGains::catch_step_s)
+  bool step_at_once_ = false;  // step_at_once_trailing_foot_first(), for the next act()
+  double phase_s_ = 0;         // time into the current step
   Eigen::Vector2d lift_off_{0, 0};
   bool balance_com_ = false;
   Eigen::Vector2d com_offset_{0, 0};  // the point balanced over the ankles, from the root
