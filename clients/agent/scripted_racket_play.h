@@ -94,6 +94,9 @@ struct Play {
   // ...in doubles too; false: in doubles the legs run on across points (table tennis, whose
   // fresh legs were measured in 1v1 only).
   bool doubles_fresh_legs = true;
+  // ...and at a point begun by a toss (`start: "serve"`: the ball hardly moving across) too;
+  // false: only at fed points, and at a toss the legs run on from the point before.
+  bool fresh_legs_at_tosses = true;
   // The swing as an arc about the vertical through the shoulder (the arm turning as one, the
   // face at a constant distance), at the least of `arc_speeds` that returns the ball in.
   double max_back_angle = 0;  // radians of backswing along the arc; 0: a straight swing
