@@ -39,6 +39,13 @@ struct ScriptedRacketPlay {
 
   bool over() const { return match->outcome().match_over; }
 
+  // Whether player `slot`'s legs are in a step begun before this tick's act(): at a point's first
+  // tick, a step run on from the point before.
+  bool legs_step_run_on(int slot) const {
+    const auto& legs = players[slot].legs();
+    return legs->stepping() && legs->step_time_s() > 1.5 * core::kControlDt;
+  }
+
   std::unique_ptr<sports::SportMatch> match;
   ObservationLayout layout;
   std::vector<ScriptedRacketPolicy> players;

@@ -107,9 +107,8 @@ TEST(ScriptedTennisLegs, StartEveryPointAfresh) {
     for (int points = 0; !play.over() && points < 10;) {
       const auto events = play.tick([&](int slot) {
         if (!new_point) return;
-        const auto& legs = play.players[slot].legs();
         ++starts;
-        steps_run_on += legs->stepping() && legs->step_time_s() > 1.5 * core::kControlDt;
+        steps_run_on += play.legs_step_run_on(slot);
       });
       new_point = false;
       for (const auto& ev : events)

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <span>
 
@@ -39,6 +40,21 @@ struct ScriptedSoccerPlay {
         o(slots, std::vector<float>(m->obs_size())),
         a(slots, std::vector<float>(m->action_size())) {
     for (auto& p : players) p.start(info(m, mode));
+  }
+  // Plays the first `seconds` of the match (or to its end): `on_kick_start(slot)` after each act()
+  // that started player `slot`'s kick (its observation in o[slot]), `after_step()` after each step.
+  void play_noting_kick_starts(double seconds, const std::function<void(int)>& on_kick_start,
+                               const std::function<void()>& after_step = {}) {
+    while (m->tick() < seconds * 30 && !m->outcome().match_over) {
+      for (std::size_t s = 0; s < players.size(); ++s) {
+        m->observe(static_cast<int>(s), o[s]);
+        const bool kicking = players[s].kick().active();
+        players[s].act(o[s], a[s]);
+        if (!kicking && players[s].kick().active()) on_kick_start(static_cast<int>(s));
+      }
+      m->step(std::vector<std::span<const float>>(a.begin(), a.end()));
+      if (after_step) after_step();
+    }
   }
   std::unique_ptr<SportMatch> m;
   std::vector<client::ScriptedSoccerPolicy> players;
@@ -323,20 +339,17 @@ TEST(ScriptedSoccer, In2v2AMatchKickStartsSwayingTowardTheKickingFootAndStrikesT
     ScriptedSoccerPlay play("2v2", seed, 4);
     auto& [m, players, o, a] = play;
     const std::size_t first = kicks.size();
-    while (m->tick() < 120 * 30 && !m->outcome().match_over) {
-      for (int s = 0; s < 4; ++s) {
-        m->observe(s, o[s]);
-        const bool kicking = players[s].kick().active();
-        players[s].act(o[s], a[s]);
-        if (kicking || !players[s].kick().active()) continue;
-        kicks.push_back({m->tick(), sway_at_kick_start(players[s], o[s])});
-      }
-      m->step({a[0], a[1], a[2], a[3]});
-      const double speed = soccer(m).ball().velocity().head<2>().norm();
-      for (std::size_t k = first; k < kicks.size(); ++k)
-        if (m->tick() - kicks[k].start_tick <= 75)
-          kicks[k].top_speed = std::max(kicks[k].top_speed, speed);
-    }
+    play.play_noting_kick_starts(
+        120,
+        [&](int s) {
+          kicks.push_back({m->tick(), sway_at_kick_start(players[s], o[s])});
+        },
+        [&] {
+          const double speed = soccer(m).ball().velocity().head<2>().norm();
+          for (std::size_t k = first; k < kicks.size(); ++k)
+            if (m->tick() - kicks[k].start_tick <= 75)
+              kicks[k].top_speed = std::max(kicks[k].top_speed, speed);
+        });
   }
   int swaying_right = 0, struck = 0;
   for (const Kick& k : kicks) {
@@ -398,28 +411,20 @@ TEST(ScriptedSoccer, In2v2APressedBallWithin15mIsShotNotDribbled) {
     const auto layout = client::ObservationLayout::from_blocks(m->layout().observation);
     const int ball_at = layout.offset("ball", "position"),
               goal_at = layout.offset("goals", "attack");
-    while (m->tick() < 120 * 30 && !m->outcome().match_over) {
-      for (int s = 0; s < 4; ++s) {
-        m->observe(s, o[s]);
-        const bool kicking = players[s].kick().active();
-        players[s].act(o[s], a[s]);
-        if (kicking || !players[s].kick().active()) continue;
-        const Eigen::Vector2d ball(o[s][ball_at], o[s][ball_at + 1]);
-        const Eigen::Vector2d goal(o[s][goal_at], o[s][goal_at + 1]);
-        if ((goal - ball).norm() < 11.2) continue;
-        ++far_kicks;
-        bool pressed = false;
-        for (int k = 0; k < 2; ++k) {
-          const int at = layout.offset("opponents", "position_" + std::to_string(k));
-          pressed |= (Eigen::Vector2d(o[s][at], o[s][at + 1]) - ball).norm() < 4.0;
-        }
-        unpressed += !pressed;
-        std::printf("seed %llu, %.1f s: player %d kicks %.1f m out\n",
-                    static_cast<unsigned long long>(seed), m->tick() / 30.0, s,
-                    (goal - ball).norm());
+    play.play_noting_kick_starts(120, [&](int s) {
+      const Eigen::Vector2d ball(o[s][ball_at], o[s][ball_at + 1]);
+      const Eigen::Vector2d goal(o[s][goal_at], o[s][goal_at + 1]);
+      if ((goal - ball).norm() < 11.2) return;
+      ++far_kicks;
+      bool pressed = false;
+      for (int k = 0; k < 2; ++k) {
+        const int at = layout.offset("opponents", "position_" + std::to_string(k));
+        pressed |= (Eigen::Vector2d(o[s][at], o[s][at + 1]) - ball).norm() < 4.0;
       }
-      m->step({a[0], a[1], a[2], a[3]});
-    }
+      unpressed += !pressed;
+      std::printf("seed %llu, %.1f s: player %d kicks %.1f m out\n",
+                  static_cast<unsigned long long>(seed), m->tick() / 30.0, s, (goal - ball).norm());
+    });
   }
   EXPECT_GE(far_kicks, 2);
   EXPECT_EQ(unpressed, 0) << "of " << far_kicks;
