@@ -452,7 +452,7 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
   // A match puts the players back at their marks for each point; ball return does not (its
   // player walks on from where the last ball left it), so there the legs carry on.
   const bool put_back = !others_.empty();
-  const bool tossed = court.vector(vec3(o, at.ball_velocity)).head<2>().norm() < 0.5;
+  const bool tossed = control::hardly_moving_across(court.vector(vec3(o, at.ball_velocity)));
   const bool fresh_legs = play.fresh_legs_at_new_point && (play.doubles_fresh_legs || !doubles_) &&
                           (play.fresh_legs_at_tosses || !tossed);
   if (new_point && put_back && fresh_legs) {

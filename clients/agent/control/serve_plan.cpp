@@ -63,9 +63,13 @@ std::optional<ShotPlan> table_serve(const BallPath& path, const BallSample& at,
 
 }  // namespace
 
+bool hardly_moving_across(const Eigen::Vector3d& velocity) {
+  return velocity.head<2>().norm() < 0.5;
+}
+
 bool is_toss(const Eigen::Vector3d& ball, const Eigen::Vector3d& velocity,
              const Eigen::Vector3d& root) {
-  return ball.x() < 0 && velocity.head<2>().norm() < 0.5 && (ball - root).head<2>().norm() < 1.5;
+  return ball.x() < 0 && hardly_moving_across(velocity) && (ball - root).head<2>().norm() < 1.5;
 }
 
 ServeAim serve_aim(const sports::racket::RacketGame& game, const Eigen::Vector3d& root) {

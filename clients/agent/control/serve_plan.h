@@ -16,9 +16,12 @@
 
 namespace olympics::client::control {
 
+// Is a ball with this velocity a toss, anyone's: hardly moving across the court (a fed or struck
+// ball flies at metres a second).
+bool hardly_moving_across(const Eigen::Vector3d& velocity);
+
 // Is the ball a toss for the player at `root`: its side's to play, not bounced, on its half,
-// within 1.5 m of it and hardly moving across the court (a fed or struck ball flies at metres a
-// second).
+// within 1.5 m of it and hardly moving across the court (hardly_moving_across).
 bool is_toss(const Eigen::Vector3d& ball, const Eigen::Vector3d& velocity,
              const Eigen::Vector3d& root);
 
