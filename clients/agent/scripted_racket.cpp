@@ -453,11 +453,9 @@ void ScriptedRacketPolicy::act(std::span<const float> o, std::span<float> a) {
   // player walks on from where the last ball left it), so there the legs carry on.
   const bool put_back = !others_.empty();
   const bool tossed = control::hardly_moving_across(court.vector(vec3(o, at.ball_velocity)));
-  const bool fresh_legs = play.fresh_legs_at_new_point && (play.doubles_fresh_legs || !doubles_) &&
-                          (play.fresh_legs_at_tosses || !tossed);
-  if (new_point && put_back && fresh_legs) {
+  if (new_point && put_back && play.fresh_legs.applies_to(doubles_, tossed)) {
     legs_.emplace(play.legs, control_dt_);
-    if (play.fresh_legs_step_at_once) legs_->step_at_once_trailing_foot_first();
+    if (play.fresh_legs.step_at_once) legs_->step_at_once_trailing_foot_first();
   }
   if (coming && stroke_ && stroke_->reachable &&
       stroke_->time_to_hit - control_dt_ < play.commit_s) {

@@ -105,7 +105,7 @@ Play table_play() {
   // point 0.379 -> 0.328, falls 2 -> 1. A backhand swing (the line turned 0.6 rad right, drawn
   // back from the left) with either face: seeds 1-4, 1.81 -> 1.53 (docs/racket-sports.md).
   p.front_face_only = true;
-  // A new point starts the legs afresh (Play::fresh_legs_at_new_point), stepping at once, the
+  // A new point starts the legs afresh (Play::FreshLegs), stepping at once, the
   // trailing foot first. Before, a step under way when the last point ended ran on at 97% of
   // point starts (1v1 tuning seeds 61-80), the swing foot yanked up mid-step from the feet the
   // match had just put back. Started afresh and standing, the body toppled forward (this
@@ -115,12 +115,12 @@ Play table_play() {
   // the feed's stroke, into the net, short or out: main 16%, 33%). The trailing foot first, it
   // meets the feed about where it stands: 5%; strokes a point 3.62 -> 4.22 (11 matches; issue
   // 29, the legs at a point's start; docs/racket-sports.md).
-  p.fresh_legs_at_new_point = true;
-  p.fresh_legs_step_at_once = true;
-  p.doubles_fresh_legs = false;
+  p.fresh_legs.at_new_point = true;
+  p.fresh_legs.step_at_once = true;
+  p.fresh_legs.in_doubles = false;
   // Measured at fed points only. At tosses, stepping at once, a 1v1 with serves to 5 went point
   // for point to its 120 s limit (seed 1: 73 points, two servers in; ScriptedRacketServe).
-  p.fresh_legs_at_tosses = false;
+  p.fresh_legs.at_tosses = false;
   return p;
 }
 
@@ -208,7 +208,7 @@ Play tennis_play() {
   // unseen seeds 210001-210016, 22 in 61.9 min -> 11 in 48.0 min (0.36 -> 0.23 a minute, z 1.2),
   // strokes per point 0.179 -> 0.196 (issue 29, tennis falls in 1v1, fifth round;
   // docs/racket-sports.md).
-  p.fresh_legs_at_new_point = true;
+  p.fresh_legs.at_new_point = true;
   return p;
 }
 

@@ -86,17 +86,26 @@ struct Play {
   // they are): the match puts every player back at its mark, standing still, where a step under
   // way when the last point ended would otherwise run on from where the feet were before. Not in
   // ball return, whose player is not put back between balls.
-  bool fresh_legs_at_new_point = false;
-  // ...and they step at once toward where they are sent, however near (beyond where a walk
-  // stops), the first step by the trailing foot (StepController::step_at_once_trailing_foot_first).
-  // false: they stand until sent beyond the walker's start distance (0.3 m) or off balance.
-  bool fresh_legs_step_at_once = false;
-  // ...in doubles too; false: in doubles the legs run on across points (table tennis, whose
-  // fresh legs were measured in 1v1 only).
-  bool doubles_fresh_legs = true;
-  // ...and at a point begun by a toss (`start: "serve"`: the ball hardly moving across) too;
-  // false: only at fed points, and at a toss the legs run on from the point before.
-  bool fresh_legs_at_tosses = true;
+  struct FreshLegs {
+    bool at_new_point = false;
+    // ...and they step at once toward where they are sent, however near (beyond where a walk
+    // stops), the first step by the trailing foot
+    // (StepController::step_at_once_trailing_foot_first). false: they stand until sent beyond the
+    // walker's start distance (0.3 m) or off balance.
+    bool step_at_once = false;
+    // ...in doubles too; false: in doubles the legs run on across points (table tennis, whose
+    // fresh legs were measured in 1v1 only).
+    bool in_doubles = true;
+    // ...and at a point begun by a toss (`start: "serve"`: the ball hardly moving across) too;
+    // false: only at fed points, and at a toss the legs run on from the point before.
+    bool at_tosses = true;
+
+    // Whether a new point, where the match put the players back, starts the legs afresh.
+    bool applies_to(bool doubles, bool tossed) const {
+      return at_new_point && (in_doubles || !doubles) && (at_tosses || !tossed);
+    }
+  };
+  FreshLegs fresh_legs;
   // The swing as an arc about the vertical through the shoulder (the arm turning as one, the
   // face at a constant distance), at the least of `arc_speeds` that returns the ball in.
   double max_back_angle = 0;  // radians of backswing along the arc; 0: a straight swing
