@@ -205,9 +205,7 @@ void SoccerKick::act(std::span<const float> o, const control::BodyPose& pose,
                         t_ >= g_.shift_s + g_.planted_wait_s;
       if (t_ >= g_.shift_s && over) {
         lift_off_ = toe_of(kicker);
-        const double per_foot =
-            ball_speed > g_.fast_ball_mps ? g_.fast_ball_per_foot : g_.ball_per_foot;
-        swing_speed_ = std::clamp(ball_speed / per_foot, 1.0, g_.max_foot_speed);
+        swing_speed_ = std::clamp(ball_speed / g_.ball_per_foot, 1.0, g_.max_foot_speed);
         next(Phase::Back);
       }
       return;

@@ -50,14 +50,6 @@ struct KickGains {
   // the swing's line turned 4 degrees left of the aim, ScriptedSoccerPolicy turns it 5: goals 134
   // of 200 against 124 at 2.4 and 128 at 1.8; against the keeper 96, 87, 79).
   double ball_per_foot = 2.0;
-  // A ball planned faster than fast_ball_mps (faster than a penalty's 7.3 m/s: a match's long
-  // shot, 11-15 m out, planned 7.4-8 m/s) is swung for fast_ball_per_foot: a shorter swing on one
-  // leg. At 2.0 the kicker was down within 4 s of 51 of 95 such kicks (2v2 seeds 1-30; its strikes
-  // under 0.6 of the plan nearly all among them, none a goal); at 1.5 44 of 92, and the matches'
-  // falls 204 -> 161, goals 51 (4 own) -> 49 (9 own); at 1.7 172 falls, 43 (4) goals. The ball
-  // still leaves at about 0.85 of its plan (median) either way: docs/soccer.md, "the long kick".
-  double fast_ball_mps = 7.35;
-  double fast_ball_per_foot = 1.5;
   double max_foot_speed = 7;    // m/s
   double com_gain = 0.6;        // pelvis moved per m of centre-of-mass error, per tick
   double com_damping_s = 0.15;  // ...less the velocity times this
