@@ -45,7 +45,7 @@ struct ScriptedSoccerPlay {
   // that started player `slot`'s kick (its observation in o[slot]), `after_step()` after each step.
   void play_noting_kick_starts(double seconds, const std::function<void(int)>& on_kick_start,
                                const std::function<void()>& after_step = {}) {
-    while (m->tick() < seconds * 30 && !m->outcome().match_over) {
+    while (m->tick() < seconds * core::kControlHz && !m->outcome().match_over) {
       for (std::size_t s = 0; s < players.size(); ++s) {
         m->observe(static_cast<int>(s), o[s]);
         const bool kicking = players[s].kick().active();
@@ -423,7 +423,8 @@ TEST(ScriptedSoccer, In2v2APressedBallWithin15mIsShotNotDribbled) {
       }
       unpressed += !pressed;
       std::printf("seed %llu, %.1f s: player %d kicks %.1f m out\n",
-                  static_cast<unsigned long long>(seed), m->tick() / 30.0, s, (goal - ball).norm());
+                  static_cast<unsigned long long>(seed), m->tick() * core::kControlDt, s,
+                  (goal - ball).norm());
     });
   }
   EXPECT_GE(far_kicks, 2);
